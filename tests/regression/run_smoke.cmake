@@ -1,0 +1,22 @@
+# Runs liggghts on DECK in WORKDIR and checks that it ran to the end and kept its particles.
+file(REMOVE_RECURSE "${WORKDIR}")
+file(MAKE_DIRECTORY "${WORKDIR}")
+execute_process(COMMAND "${LIGGGHTS}" -h OUTPUT_VARIABLE _help RESULT_VARIABLE _rc)
+if(NOT _rc EQUAL 0)
+  message(FATAL_ERROR "liggghts -h failed (exit ${_rc})")
+endif()
+# The plugin's styles must be compiled in (the list grows with later issues).
+foreach(_style IN LISTS EXPECTED_STYLES)
+  if(NOT _help MATCHES "${_style}")
+    message(FATAL_ERROR "liggghts -h does not list the style '${_style}'")
+  endif()
+endforeach()
+execute_process(COMMAND "${LIGGGHTS}" -in "${DECK}" -log log.smoke WORKING_DIRECTORY "${WORKDIR}"
+                OUTPUT_VARIABLE _out ERROR_VARIABLE _err RESULT_VARIABLE _rc)
+if(NOT _rc EQUAL 0)
+  message(FATAL_ERROR "liggghts -in ${DECK} failed (exit ${_rc}):\n${_out}\n${_err}")
+endif()
+if(NOT _out MATCHES "SMOKE_DONE atoms=100")
+  message(FATAL_ERROR "the smoke deck did not end with its 100 particles:\n${_out}")
+endif()
+message(STATUS "smoke deck ran to the end with 100 particles")
