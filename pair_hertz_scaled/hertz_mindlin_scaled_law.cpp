@@ -47,6 +47,18 @@ HertzMindlinScaled::HertzMindlinScaled(const ShearMaterial &a, const ShearMateri
   shear_coefficient_ = 2.0 * std::cbrt(G * G * 3.0 * (1.0 - nu) * diameter_term) / (2.0 - nu);
 }
 
+HertzMindlinCoefficients hertz_mindlin_coefficients(const ShearMaterial &a, const ShearMaterial &b)
+{
+  check_material(a);
+  check_material(b);
+  const double G = 0.5 * (a.shear_modulus + b.shear_modulus);
+  const double nu = 0.5 * (a.poisson_ratio + b.poisson_ratio);
+  HertzMindlinCoefficients c;
+  c.normal = 2.0 * std::sqrt(2.0) * G / (3.0 * (1.0 - nu));
+  c.shear = 2.0 * std::cbrt(3.0 * G * G * (1.0 - nu) * c.normal) / (2.0 - nu);
+  return c;
+}
+
 double HertzMindlinScaled::normal_stiffness(double overlap) const
 {
   return overlap > 0.0 ? normal_coefficient_ * std::sqrt(overlap) : 0.0;

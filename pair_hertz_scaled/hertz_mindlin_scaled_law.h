@@ -14,6 +14,8 @@
 #ifndef HERTZ_MINDLIN_SCALED_LAW_H
 #define HERTZ_MINDLIN_SCALED_LAW_H
 
+#include <cmath>
+
 namespace crush {
 
 // Elastic constants for the contact law: shear modulus G (Pa) and Poisson's ratio nu.
@@ -22,7 +24,31 @@ struct ShearMaterial {
   double poisson_ratio;
 };
 
-// The size- and material-dependent factors of eq. 8-9 for one pair, computed once per pair.
+// The material factors of eq. 8-9 for one pair of materials (per LIGGGHTS type pair), so that the
+// per-contact cost is one square root. With Dt = D1 D2/(D1+D2):
+//   k_N = normal sqrt(Dt U),  normal = 2 sqrt2 <G> / (3 (1-<nu>))                       (eq. 8)
+//   k_S = shear sqrt(Dt U),   shear  = 2 (3 <G>^2 (1-<nu>) normal)^(1/3) / (2-<nu>)
+// the latter being eq. 9 with |F_n| = k_N U, the elastic normal force, substituted.
+struct HertzMindlinCoefficients {
+  double normal;
+  double shear;
+};
+HertzMindlinCoefficients hertz_mindlin_coefficients(const ShearMaterial &a, const ShearMaterial &b);
+
+// Dt = D1 D2/(D1+D2) (m) of a ball-ball contact from the radii; for a plane (infinite radius) Dt = D1.
+inline double diameter_term_from_radii(double r1, double r2) { return 2.0 * r1 * r2 / (r1 + r2); }
+
+inline double normal_stiffness(const HertzMindlinCoefficients &c, double diameter_term, double overlap)
+{
+  return c.normal * std::sqrt(diameter_term * overlap);
+}
+
+inline double shear_stiffness(const HertzMindlinCoefficients &c, double diameter_term, double overlap)
+{
+  return c.shear * std::sqrt(diameter_term * overlap);
+}
+
+// eq. 8-9 for one contact geometry, in the paper's form (|F_n| enters eq. 9 as given).
 class HertzMindlinScaled {
  public:
   // Ball-ball contact of diameters d1, d2 (m).
@@ -44,7 +70,7 @@ class HertzMindlinScaled {
   HertzMindlinScaled(const ShearMaterial &a, const ShearMaterial &b, double diameter_term, bool);
   double diameter_term_;
   double normal_coefficient_;  // k_N / sqrt(U)
-  double shear_coefficient_;   // k_S / |F_n|^(1/3)
+  double shear_coefficient_;   // k_S / |F_n|^(1/3) (eq. 9)
 };
 
 // Young's modulus from G and nu: E = 2 G (1 + nu).

@@ -13,7 +13,7 @@ rm -rf "$scratch" && mkdir -p "$scratch"
 tar xJf "$tarball" -C "$scratch"
 tree=$(echo "$scratch"/LIGGGHTS-PUBLIC-*)
 for p in "$here"/patches/*.patch; do patch -s -p1 -d "$tree" < "$p"; done
-cp "$here"/fix_crush/* "$here"/pair_hertz_scaled/* "$tree/src/"
+cp "$here"/fix_crush/* "$here"/pair_hertz_scaled/* "$here"/quasi_static/* "$tree/src/"
 
 # LIGGGHTS' user options: no VTK (LIGGGHTS 3.8.0 predates Debian's VTK 9), Eigen for the plugin.
 cat > "$tree/src/MAKE/Makefile.user" <<MAKEUSER
@@ -31,9 +31,15 @@ USE_MFEM = "OFF"
 BUILD_LIBRARIES = "NONE"
 MAKEFILE_USER_VERSION = "1.4"
 MPI_CCFLAGS_USR = -funroll-loops -fstrict-aliasing -Wno-unused-result -I/usr/include/eigen3
+MPI_LIB_USR = $(mpicxx --showme:libdirs | awk '{print $1}')
+MPI_INC_USR = $(mpicxx --showme:incdirs | awk '{print $1}')
 MAKEUSER
 command -v ccache >/dev/null && export CCACHE_BASEDIR="$scratch"
-(cd "$tree/src" && make -j "$(nproc)" auto > "$scratch/make_auto.log" 2>&1) || {
+# Makefile.auto detects the MPI flavour from a test file written with '\#include': GNU make >= 4.3
+# keeps that backslash, the test fails and Open MPI is taken for MPICH (-lmpich). Name it instead.
+mpi_type=OpenMPI
+mpicxx --showme >/dev/null 2>&1 || mpi_type=MPICH
+(cd "$tree/src" && make -j "$(nproc)" auto MPI_TYPE=$mpi_type > "$scratch/make_auto.log" 2>&1) || {
   tail -30 "$scratch/make_auto.log"; echo "make auto FAILED (log: $scratch/make_auto.log)"; exit 1; }
 exe="$tree/src/lmp_auto"
 [ -x "$exe" ] || { echo "make auto produced no $exe"; exit 1; }

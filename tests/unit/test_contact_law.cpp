@@ -50,6 +50,23 @@ TEST(ContactLaw, EqualMaterialsGiveLiggghtsHertzAndMindlinForms)
   }
 }
 
+TEST(ContactLaw, PerTypePairCoefficientsEqualThePapersForm)
+{
+  const ShearMaterial a{3e9, 0.3}, b{5e9, 0.2};
+  const HertzMindlinCoefficients c = hertz_mindlin_coefficients(a, b);
+  for (double U : {1e-9, 1e-7, 3e-6}) {
+    const double r1 = 0.1e-3, r2 = 0.35e-3;
+    const HertzMindlinScaled law(a, b, 2 * r1, 2 * r2);
+    const double Dt = diameter_term_from_radii(r1, r2);
+    EXPECT_NEAR(Dt, law.diameter_term(), 1e-18);
+    const double kn = law.normal_stiffness(U);
+    EXPECT_NEAR(normal_stiffness(c, Dt, U), kn, 1e-12 * kn);
+    const double ks = law.shear_stiffness(law.normal_force(U));  // eq. 9 with |F| = k_N U
+    EXPECT_NEAR(shear_stiffness(c, Dt, U), ks, 1e-12 * ks);
+  }
+  EXPECT_THROW(hertz_mindlin_coefficients({3e9, 0.5}, b), ModelError);
+}
+
 TEST(ContactLaw, PlaneIsASphereOfInfiniteDiameterOfTheWallMaterial)
 {
   const ShearMaterial ball{3e9, 0.3}, wall{80e9, 0.25};

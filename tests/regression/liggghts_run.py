@@ -1,0 +1,63 @@
+"""Helpers for the deck tests: run the built liggghts on a deck and read its outputs (LIGGGHTS' own
+log and dump formats). Plain Python 3, no third-party modules."""
+import os
+import re
+import shutil
+import subprocess
+
+
+def run_deck(liggghts, deck, workdir, variables=None, ranks=1, expect_fail=False):
+    """Runs `liggghts -in deck` in workdir (created afresh) with -var name value pairs; returns the
+    screen output. Decks may include files from their own folder: they are run from a copy of it."""
+    if os.path.isdir(workdir):
+        shutil.rmtree(workdir)
+    shutil.copytree(os.path.dirname(os.path.abspath(deck)), workdir)
+    cmd = [liggghts, "-in", os.path.basename(deck), "-log", "log.liggghts"]
+    for name, value in (variables or {}).items():
+        cmd += ["-var", name, str(value)]
+    # error->one() aborts without flushing stdout: line-buffer it so its message is not lost.
+    if shutil.which("stdbuf"):
+        cmd = ["stdbuf", "-oL"] + cmd
+    if ranks > 1:
+        cmd = ["mpiexec", "-n", str(ranks), "--oversubscribe"] + cmd
+        os.environ.setdefault("OMPI_ALLOW_RUN_AS_ROOT", "1")
+        os.environ.setdefault("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1")
+    proc = subprocess.run(cmd, cwd=workdir, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                          universal_newlines=True, errors="replace")
+    if expect_fail:
+        if proc.returncode == 0 and "ERROR" not in proc.stdout:
+            raise AssertionError("expected %s to stop with an error, it ran to the end" % deck)
+        return proc.stdout
+    if proc.returncode != 0 or "ERROR" in proc.stdout:
+        raise AssertionError("liggghts failed on %s (exit %d):\n%s" % (deck, proc.returncode,
+                                                                      proc.stdout[-3000:]))
+    return proc.stdout
+
+
+def printed(output, key):
+    """The number printed by a deck's `print "KEY value"` line."""
+    m = re.search(r"^%s\s+(\S+)\s*$" % re.escape(key), output, re.M)
+    if not m:
+        raise AssertionError("the run printed no '%s' line" % key)
+    return float(m.group(1))
+
+
+def read_dump(path):
+    """Snapshots of a LIGGGHTS 'dump custom' file: a list of (step, columns, rows), rows as dicts."""
+    snapshots = []
+    with open(path) as f:
+        lines = f.read().splitlines()
+    k = 0
+    while k < len(lines):
+        if lines[k].startswith("ITEM: TIMESTEP"):
+            step = int(lines[k + 1])
+            natoms = int(lines[k + 3])
+            columns = lines[k + 8].split()[2:]
+            rows = [dict(zip(columns, map(float, lines[k + 9 + n].split()))) for n in range(natoms)]
+            snapshots.append((step, columns, rows))
+            k += 9 + natoms
+        else:
+            k += 1
+    if not snapshots:
+        raise AssertionError("no snapshot in dump %s" % path)
+    return snapshots

@@ -1,0 +1,227 @@
+#!/usr/bin/env python3
+"""Deck tests of the hertz/scaled + mindlin/scaled contact models and fix damp/local, run by the built
+liggghts. Each case asserts a value that would be wrong if the physics were wrong.
+
+  python3 test_contact_models.py LIGGGHTS WORKDIR CASE
+"""
+import math
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from liggghts_run import printed, read_dump, run_deck  # noqa: E402
+
+HERE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "contact")
+G, NU = 3e9, 0.3                                    # in.materials: E = 7.8e9, nu = 0.3
+C_NORMAL = 2 * math.sqrt(2) * G / (3 * (1 - NU))   # eq. 8: k_N = C_NORMAL sqrt(Dt U)
+C_SHEAR = 2 * math.sqrt(2) * G / (2 - NU)          # eq. 9 with |F| = k_N U: k_S = C_SHEAR sqrt(Dt U)
+
+
+def check(condition, message):
+    if not condition:
+        raise AssertionError(message)
+    print("ok: " + message)
+
+
+def deck(name):
+    return os.path.join(HERE, name)
+
+
+def normal_forces(liggghts, work, model, tmodel):
+    out = os.path.join(work, "normal.dump")
+    run_deck(liggghts, deck("in.normal"), work, {"model": model, "tmodel": tmodel, "out": "normal.dump"})
+    result = []
+    for step, _, rows in read_dump(out):
+        a, b = rows
+        gap = math.dist((a["x"], a["y"], a["z"]), (b["x"], b["y"], b["z"]))
+        result.append((step, a["radius"] + b["radius"] - gap, a["radius"], b["radius"], -a["fx"]))
+    return result
+
+
+def case_normal_hertz(liggghts, work):
+    """Two spheres, pure normal loading: F = k_N U of eq. 8 to 1e-10."""
+    worst, n = 0.0, 0
+    for step, U, r1, r2, F in normal_forces(liggghts, work, "hertz/scaled", "mindlin/scaled"):
+        if U <= 0:
+            check(F == 0.0, "no force before contact (step %d)" % step)
+            continue
+        Dt = 2 * r1 * r2 / (r1 + r2)
+        expected = C_NORMAL * math.sqrt(Dt * U) * U
+        worst = max(worst, abs(F - expected) / expected)
+        n += 1
+    check(n >= 10, "%d loaded snapshots" % n)
+    check(worst < 1e-10, "normal force matches eq. 8 (worst relative error %.2e)" % worst)
+
+
+def case_normal_vs_builtin(liggghts, work):
+    """Equal materials, no damping: hertz/scaled gives LIGGGHTS' built-in hertz forces."""
+    scaled = normal_forces(liggghts, os.path.join(work, "scaled"), "hertz/scaled", "mindlin/scaled")
+    builtin = normal_forces(liggghts, os.path.join(work, "builtin"), "hertz", "no_history")
+    worst = max(abs(a[4] - b[4]) / max(abs(b[4]), 1e-300) for a, b in zip(scaled, builtin) if b[4] > 0)
+    check(len(scaled) == len(builtin), "same snapshots")
+    check(worst < 1e-12, "hertz/scaled equals built-in hertz (worst relative difference %.2e)" % worst)
+
+
+def assembly_contacts(liggghts, work, model, tmodel, mu):
+    """Normal force magnitude per contact (keyed by the two tags) after 300 steps."""
+    run_deck(liggghts, deck("in.assembly"), work, {"model": model, "tmodel": tmodel, "mu": mu,
+                                                   "out": "final.dump", "contacts": "contacts.dump"})
+    rows = read_dump(os.path.join(work, "contacts.dump"))[-1][2]
+    keys = sorted(rows[0].keys())
+    return {(int(r[keys[0]]), int(r[keys[1]])):
+            math.sqrt(r[keys[3]] ** 2 + r[keys[4]] ** 2 + r[keys[5]] ** 2) for r in rows}
+
+
+def normal_force_difference(a, b):
+    """Largest per-contact difference of normal force magnitudes, relative to the mean one."""
+    check(set(a) == set(b), "the same %d contacts in both runs" % len(a))
+    mean = sum(b.values()) / len(b)
+    return max(abs(a[k] - b[k]) for k in b) / mean
+
+
+def case_assembly_vs_builtin(liggghts, work):
+    """864 dense spheres, 300 steps, against hertz + tangential history. Frictionless, the normal
+    forces agree to rounding. With friction the trajectories differ through the tangential laws:
+    mindlin/scaled adds k_t du each step (PFC), history multiplies the total displacement by the
+    current k_t; they differ by (k_t(now) - k_t(then)) du, small when the overlaps change little."""
+    frictionless = normal_force_difference(
+        assembly_contacts(liggghts, os.path.join(work, "s0"), "hertz/scaled", "mindlin/scaled", 0.0),
+        assembly_contacts(liggghts, os.path.join(work, "b0"), "hertz", "history", 0.0))
+    check(frictionless < 1e-10, "frictionless: normal forces equal the built-in model's "
+                                "(largest difference %.2e of the mean)" % frictionless)
+    friction = normal_force_difference(
+        assembly_contacts(liggghts, os.path.join(work, "s1"), "hertz/scaled", "mindlin/scaled", 0.5),
+        assembly_contacts(liggghts, os.path.join(work, "b1"), "hertz", "history", 0.5))
+    # The assembly relaxes: normal forces drop by about a third in 300 steps, k_t by a sixth, so the
+    # two shear laws part by a few percent of the shear force and the trajectories follow.
+    check(friction < 0.05, "mu = 0.5: normal forces differ by %.2e of the mean (below 5e-2)" % friction)
+    check(friction > frictionless, "and the difference comes from the tangential law")
+
+
+def case_oblique(liggghts, work):
+    """Sphere dragged on a plane: slope k_S of eq. 9 (wall convention Dt = D), then Coulomb sliding."""
+    run_deck(liggghts, deck("in.oblique"), work, {"out": "oblique.dump"})
+    snaps = read_dump(os.path.join(work, "oblique.dump"))
+    r = snaps[0][2][0]["radius"]
+    U = r - snaps[0][2][0]["z"]
+    Dt = 2 * r
+    Fn_expected = C_NORMAL * math.sqrt(Dt * U) * U
+    k_s = C_SHEAR * math.sqrt(Dt * U)
+    v, dt, mu = 0.001, 1e-8, 0.3
+    elastic, sliding = [], []
+    for step, _, rows in snaps:
+        a = rows[0]
+        check_fn = abs(a["fz"] - Fn_expected) / Fn_expected
+        if check_fn > 1e-10:
+            raise AssertionError("normal wall force %.6g at step %d, expected %.6g" % (a["fz"], step, Fn_expected))
+        if abs(a["fx"]) < 0.99 * mu * a["fz"]:
+            elastic.append((step, a["fx"], a["fz"]))
+        elif abs(a["fx"]) > (1 - 1e-6) * mu * a["fz"]:
+            sliding.append((step, a["fx"], a["fz"]))
+    check(len(elastic) > 5 and len(sliding) > 5, "both regimes sampled (%d elastic, %d sliding)"
+          % (len(elastic), len(sliding)))
+    (s0, f0, _), (s1, f1, _) = elastic[1], elastic[-1]
+    slope = (f1 - f0) / ((s1 - s0) * v * dt)
+    check(abs(-slope - k_s) / k_s < 1e-9, "shear stiffness k_S = %.6g N/m (eq. 9: %.6g)" % (-slope, k_s))
+    worst = max(abs(abs(fx) - mu * fz) / (mu * fz) for _, fx, fz in sliding)
+    check(worst < 1e-12, "sliding at mu |F_n| (worst relative error %.2e)" % worst)
+
+
+def tangential_in_rotation(liggghts, work, tmodel):
+    run_deck(liggghts, deck("in.rotate"), work, {"tmodel": tmodel, "out": "rotate.dump"})
+    history = []
+    for step, _, rows in read_dump(os.path.join(work, "rotate.dump")):
+        a, b = rows
+        n = [b[k] - a[k] for k in "xyz"]
+        nn = math.sqrt(sum(c * c for c in n))
+        n = [c / nn for c in n]
+        f = [b["f" + k] for k in "xyz"]
+        fn = sum(fc * nc for fc, nc in zip(f, n))
+        ft = [fc - fn * nc for fc, nc in zip(f, n)]
+        # tangent direction of the rotation: e_z x n
+        t = (-n[1], n[0], 0.0)
+        history.append((step, math.sqrt(sum(c * c for c in ft)), sum(fc * tc for fc, tc in zip(ft, t)), n))
+    return history
+
+
+def case_rotating_contact(liggghts, work):
+    """The stored shear force turns with the contact plane when the pair turns rigidly by 90 deg."""
+    hist = tangential_in_rotation(liggghts, os.path.join(work, "scaled"), "mindlin/scaled")
+    m0 = hist[0][1]
+    check(m0 > 0, "a shear force was stored before turning (%.4g N)" % m0)
+    drift = max(abs(h[1] - m0) / m0 for h in hist)
+    check(drift < 1e-9, "its magnitude is kept while turning (largest change %.2e)" % drift)
+    aligned = min(abs(h[2]) / h[1] for h in hist)
+    check(aligned > 1 - 1e-9, "it stays along the turning tangent e_z x n (alignment %.12f)" % aligned)
+    check(abs(hist[-1][3][1]) > 0.999999, "the contact normal turned by 90 degrees")
+    builtin = tangential_in_rotation(liggghts, os.path.join(work, "history"), "history")
+    loss = (builtin[0][1] - builtin[-1][1]) / builtin[0][1]
+    print("note: LIGGGHTS' tangential history (projection only) loses %.2e of the shear force in "
+          "the same rotation" % loss)
+
+
+def case_impact_energy(liggghts, work):
+    """Elastic head-on impact without damping conserves kinetic energy to 1e-4."""
+    out = run_deck(liggghts, deck("in.impact"), work)
+    before, after = printed(out, "KE_BEFORE"), printed(out, "KE_AFTER")
+    check(abs(after - before) / before < 1e-4, "kinetic energy after/before = %.8f" % (after / before))
+    check(printed(out, "VX_AFTER") > 0.0999, "the spheres rebounded")
+
+
+def case_local_damping(liggghts, work):
+    """Constant force m g, local damping alpha: with velocity Verlet, v_n = g dt [n (1-alpha) + alpha/2]
+    (the first half step is undamped, v = 0); PFC's continuous form is v = (1-alpha) g t."""
+    for alpha in (0.05, 0.3):
+        out = run_deck(liggghts, deck("in.damping"), os.path.join(work, str(alpha)), {"alpha": alpha})
+        vz = printed(out, "VZ_AFTER")
+        expected = -9.81 * 1e-6 * (1000 * (1 - alpha) + alpha / 2)
+        check(abs(vz - expected) / abs(expected) < 1e-12,
+              "alpha = %g: v_z = %.12g m/s (closed form %.12g)" % (alpha, vz, expected))
+
+
+def case_bad_input(liggghts, work):
+    """Errors name the keyword or property and what was expected."""
+    cases = [
+        ("damping fix before gravity", "in.damping", {"alpha": 0.05},
+         [("fix             grav all gravity 9.81 vector 0.0 0.0 -1.0\n", ""),
+          ("fix             damp all damp/local alpha ${alpha}\n",
+           "fix             damp all damp/local alpha ${alpha}\n"
+           "fix             grav all gravity 9.81 vector 0.0 0.0 -1.0\n")],
+         "fix damp/local must be defined after fix grav"),
+        ("alpha out of range", "in.damping", {"alpha": 1.5}, [], "'alpha' must be in [0, 1)"),
+        ("missing alpha", "in.damping", {"alpha": 0.1},
+         [("damp/local alpha ${alpha}", "damp/local")], "keyword 'alpha' is required"),
+        ("unknown damping keyword", "in.damping", {"alpha": 0.1},
+         [("damp/local alpha ${alpha}", "damp/local alpha ${alpha} speed 3")], "unknown keyword 'speed'"),
+        ("Poisson ratio out of range", "in.impact", {},
+         [("poissonsRatio peratomtype 0.3 0.3", "poissonsRatio peratomtype 0.6 0.6")], "poisson"),
+        ("missing Poisson ratio", "in.impact", {},
+         [("fix             m2 all property/global poissonsRatio peratomtype 0.3 0.3\n", "")],
+         "poissonsRatio"),
+    ]
+    for label, name, variables, edits, expected in cases:
+        path = os.path.join(work, label.replace(" ", "_"))
+        os.makedirs(path, exist_ok=True)
+        src = os.path.join(path, "deck")
+        if os.path.isdir(src):
+            import shutil
+            shutil.rmtree(src)
+        import shutil
+        shutil.copytree(HERE, src)
+        target = os.path.join(src, "in.materials" if "oisson" in label else name)
+        text = open(target).read()
+        for old, new in edits:
+            if old not in text:
+                raise AssertionError("test setup: '%s' not in %s" % (old.strip(), target))
+            text = text.replace(old, new)
+        open(target, "w").write(text)
+        out = run_deck(liggghts, os.path.join(src, name), os.path.join(path, "run"), variables,
+                       expect_fail=True)
+        check(expected.lower() in out.lower(), "%s -> error mentions '%s'" % (label, expected))
+
+
+if __name__ == "__main__":
+    liggghts, workdir, case = sys.argv[1:4]
+    os.makedirs(workdir, exist_ok=True)
+    globals()["case_" + case](os.path.abspath(liggghts), os.path.abspath(workdir))
+    print("PASSED " + case)
