@@ -16,32 +16,34 @@ namespace LAMMPS_NS {
 class LAMMPS;
 
 // Records the largest F_n / F_lim per particle over its contacts during one force computation.
+// data[i] = {sigma_lim (Pa), generation, largest F_n / F_lim}: fix crush's per-atom array.
 class CrushRecorder {
  public:
-  CrushRecorder() : ratio(0), strength_cubed(0), nlocal(0), limit_factor(0) {}
+  CrushRecorder() : data(0), nlocal(0), limit_factor(0) {}
 
-  // F_lim = (pi sigma_lim)^3 (3/(4 E'))^2 r'^2 (eq. 5): strength_cubed[i] = (pi sigma_lim_i)^3 (Pa^3),
-  // limit_factor[itype][jtype] = (3/(4 E'))^2 (1/Pa^2), r' the contact's effective radius (m).
+  // F_lim = (pi sigma_lim)^3 (3/(4 E'))^2 r'^2 (eq. 5) with limit_factor[itype][jtype] = (3/(4 E'))^2
+  // (1/Pa^2) and r' the contact's effective radius (m); F_n the elastic normal force (N).
   inline void record(int i, int j, bool is_wall, int itype, int jtype, double radi, double radj,
                      double normal_force) const
   {
     const double r_eff = is_wall ? radi : radi * radj / (radi + radj);
     const double base = limit_factor[itype][jtype] * r_eff * r_eff;
-    update(i, normal_force, strength_cubed[i] * base);
-    if (!is_wall && j < nlocal) update(j, normal_force, strength_cubed[j] * base);
+    update(data[i], normal_force, base);
+    if (!is_wall && j < nlocal) update(data[j], normal_force, base);
   }
 
-  double *ratio;           // per atom: largest F_n / F_lim this step
-  const double *strength_cubed;
+  double **data;
   int nlocal;
   double **limit_factor;
 
  private:
-  inline void update(int i, double force, double limit) const
+  static inline void update(double *d, double force, double base)
   {
+    const double s = 3.14159265358979323846 * d[0];
+    const double limit = s * s * s * base;
     // A particle of zero strength breaks under any compressive contact.
     const double r = limit > 0.0 ? force / limit : (force > 0.0 ? HUGE_VAL : 0.0);
-    if (r > ratio[i]) ratio[i] = r;
+    if (r > d[2]) d[2] = r;
   }
 };
 

@@ -1,0 +1,110 @@
+/* ----------------------------------------------------------------------
+   liggghts-crush: compute crush/gsd (see compute_crush_gsd.h).
+------------------------------------------------------------------------- */
+#include "compute_crush_gsd.h"
+
+#include <cstdlib>
+#include <cstring>
+#include <string>
+
+#include "atom.h"
+#include "crush_grading.h"
+#include "crush_model_error.h"
+#include "error.h"
+#include "fix_crush.h"
+#include "modify.h"
+#include "update.h"
+
+using namespace LAMMPS_NS;
+
+ComputeCrushGsd::ComputeCrushGsd(LAMMPS *lmp, int &iarg, int narg, char **arg) :
+  Compute(lmp, iarg, narg, arg), fix_id_(NULL), fix_(NULL), dmax_(0.0)
+{
+  if (narg < iarg + 3 || strcmp(arg[iarg + 1], "sieves") != 0)
+    error->all(FLERR, "compute crush/gsd: expected 'compute ID group crush/gsd fix-ID sieves s1 s2 ... [dmax d]'");
+  fix_id_ = new char[strlen(arg[iarg]) + 1];
+  strcpy(fix_id_, arg[iarg]);
+  iarg += 2;
+  for (; iarg < narg && strcmp(arg[iarg], "dmax") != 0; iarg++) {
+    char *end = NULL;
+    const double s = strtod(arg[iarg], &end);
+    if (*end != '\0' || !(s > 0.0))
+      error->all(FLERR, (std::string("compute crush/gsd: keyword 'sieves' expects sizes > 0 (m), got '") +
+                         arg[iarg] + "'").c_str());
+    if (!sieves_.empty() && s <= sieves_.back())
+      error->all(FLERR, "compute crush/gsd: keyword 'sieves' expects ascending sizes");
+    sieves_.push_back(s);
+  }
+  if (iarg < narg) {
+    char *end = NULL;
+    if (iarg + 2 != narg || !((dmax_ = strtod(arg[iarg + 1], &end)) > 0.0) || *end != '\0')
+      error->all(FLERR, "compute crush/gsd: keyword 'dmax' expects one size > 0 (m), last on the line");
+    iarg += 2;
+  }
+  if (sieves_.empty()) error->all(FLERR, "compute crush/gsd: keyword 'sieves' needs at least one size");
+
+  scalar_flag = vector_flag = 1;
+  size_vector = static_cast<int>(sieves_.size()) + 1;
+  extscalar = extvector = 0;
+  vector = new double[size_vector];
+}
+
+ComputeCrushGsd::~ComputeCrushGsd()
+{
+  delete[] fix_id_;
+  delete[] vector;
+}
+
+void ComputeCrushGsd::init()
+{
+  const int ifix = modify->find_fix(fix_id_);
+  if (ifix < 0 || strcmp(modify->fix[ifix]->style, "crush") != 0)
+    error->all(FLERR, (std::string("compute crush/gsd: '") + fix_id_ + "' is not the ID of a fix crush").c_str());
+  fix_ = static_cast<FixCrush *>(modify->fix[ifix]);
+}
+
+// sums = {volume passing each sieve..., volume, volume x size}, added over processors.
+void ComputeCrushGsd::sum_grains(std::vector<double> &sums) const
+{
+  const crush::Grading grading(sieves_, fix_->settings().scale_factor, fix_->settings().fines_dimension);
+  crush::GradingSums local = grading.empty_sums();
+  for (int i = 0; i < atom->nlocal; i++)
+    if (atom->mask[i] & groupbit) grading.add_grain(2.0 * atom->radius[i], local);
+  std::vector<double> packed(local.volume_passing);
+  packed.push_back(local.volume);
+  packed.push_back(local.volume_times_size);
+  sums.assign(packed.size(), 0.0);
+  MPI_Allreduce(packed.data(), sums.data(), static_cast<int>(packed.size()), MPI_DOUBLE, MPI_SUM, world);
+}
+
+double ComputeCrushGsd::compute_scalar()
+{
+  invoked_scalar = update->ntimestep;
+  std::vector<double> sums;
+  sum_grains(sums);
+  scalar = sums[sieves_.size()] + fix_->removed_volume();
+  return scalar;
+}
+
+void ComputeCrushGsd::compute_vector()
+{
+  invoked_vector = update->ntimestep;
+  std::vector<double> packed;
+  sum_grains(packed);
+  const crush::CrushSettings &c = fix_->settings();
+  const crush::Grading grading(sieves_, c.scale_factor, c.fines_dimension);
+  crush::GradingSums sums = grading.empty_sums();
+  for (std::size_t k = 0; k < sieves_.size(); k++) sums.volume_passing[k] = packed[k];
+  sums.volume = packed[sieves_.size()];
+  sums.volume_times_size = packed[sieves_.size() + 1];
+  const double dmax = dmax_ > 0.0 ? dmax_ : fix_->initial_largest_diameter() / c.scale_factor;
+  try {
+    const std::vector<double> passing =
+        grading.percent_passing(sums, fix_->removed_volume(), fix_->smallest_fragment_diameter());
+    for (std::size_t k = 0; k < passing.size(); k++) vector[k] = passing[k];
+    vector[sieves_.size()] =
+        grading.grading_index(sums, fix_->removed_volume(), fix_->smallest_fragment_diameter(), dmax);
+  } catch (const crush::ModelError &e) {
+    error->all(FLERR, (std::string("compute crush/gsd: ") + e.what()).c_str());
+  }
+}

@@ -1,0 +1,47 @@
+/* Crushing model (plain C++): the settings of fix crush, parsed and validated from its keywords.
+
+   fix ID group crush sigma_lim0 5e9 cv 1 weibull_m 10 d0 2e-3 seed 1234567 &
+       scale 2 dmin 5e-5 every 1 orientation random distribution normal size_effect yes &
+       layout fourteen fines_dimension 2.5 rayleigh_fraction 0.3 log crush_events.csv
+
+   Required: sigma_lim0 (Pa), cv, weibull_m, d0 (m), seed. Every error names the keyword and the
+   expected value (ModelError), for the LIGGGHTS adapter to pass to error->all(). */
+#ifndef CRUSH_SETTINGS_H
+#define CRUSH_SETTINGS_H
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "crush_fragments.h"
+#include "crush_strength.h"
+
+namespace crush {
+
+struct CrushSettings {
+  double sigma_lim0 = 0.0;       // Pa, mean strength at d = N d0 (eq. 10)
+  double cv = -1.0;              // coefficient of variation of the strength draw
+  double weibull_m = 0.0;        // Weibull modulus: size effect exponent -3/m (eq. 6)
+  double d0 = 0.0;               // m, reference diameter
+  std::uint64_t seed = 0;        // strength draws and orientations
+  double scale_factor = 1.0;     // N, the upscaling factor (sec. 2.4)
+  double dmin = 0.0;             // m, comminution limit: smaller particles never break (0: none)
+  int every = 1;                 // check for breakage every this many steps
+  bool random_orientation = true;
+  StrengthDistribution distribution = StrengthDistribution::normal;
+  bool size_effect = true;
+  FragmentLayout layout = FragmentLayout::fourteen;
+  double fines_dimension = 2.5;  // fractal dimension of the removed volume in the GSD
+  double rayleigh_fraction = 0.3;  // largest allowed time step / Rayleigh time of the smallest grain
+  std::string log_file;          // CSV event log ("" = none)
+
+  // sigma_lim (Pa) of a particle of diameter d (m) with strength draw s (Pa): eq. 10 or s.
+  double size_scaled(double s, double d) const;
+};
+
+// Parses the keyword/value list that follows 'fix ID group crush'.
+CrushSettings parse_crush_settings(const std::vector<std::string> &args);
+
+}  // namespace crush
+
+#endif

@@ -1,0 +1,466 @@
+/* ----------------------------------------------------------------------
+   liggghts-crush: fix crush (see fix_crush.h and doc/fix_crush.txt).
+------------------------------------------------------------------------- */
+#include "fix_crush.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <string>
+
+#include "atom.h"
+#include "atom_vec.h"
+#include "comm.h"
+#include "crush_breakage_limit.h"
+#include "crush_constants.h"
+#include "crush_fragments.h"
+#include "crush_model_error.h"
+#include "domain.h"
+#include "error.h"
+#include "fix_property_atom.h"
+#include "fix_property_global.h"
+#include "force.h"
+#include "irregular.h"
+#include "memory.h"
+#include "modify.h"
+#include "pair_gran.h"
+#include "update.h"
+#include "hertz_mindlin_scaled_law.h"
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+
+namespace {
+
+enum Column { STRENGTH = 0, GENERATION = 1, RATIO = 2 };
+
+crush::CrushSettings parse(Error *error, int narg, char **arg)
+{
+  try {
+    return crush::parse_crush_settings(std::vector<std::string>(arg + 3, arg + narg));
+  } catch (const crush::ModelError &e) {
+    error->all(FLERR, e.what());
+  }
+  return crush::CrushSettings();
+}
+
+}  // namespace
+
+FixCrush::FixCrush(LAMMPS *lmp, int narg, char **arg) :
+  Fix(lmp, narg, arg),
+  settings_(parse(error, narg, arg)),
+  strength_(settings_.distribution, settings_.sigma_lim0, settings_.cv, settings_.weibull_m, settings_.seed),
+  fix_data_(NULL), data_id_(NULL), limit_factor_(NULL), irregular_(NULL), log_(NULL),
+  events_total_(0.0), removed_volume_(0.0), max_ratio_(0.0), smallest_fragment_diameter_(0.0),
+  initial_largest_diameter_(0.0), next_tag_(0.0)
+{
+  if (!atom->radius_flag || !atom->rmass_flag || !atom->density_flag)
+    error->all(FLERR, "fix crush needs 'atom_style granular' (radius, mass and density per atom)");
+  if (atom->map_style == 0)
+    error->all(FLERR, "fix crush needs an atom map: add 'atom_modify map array' before the box is created");
+  for (int k = 0; k < modify->nfix; k++)
+    if (strcmp(modify->fix[k]->style, "crush") == 0)
+      error->all(FLERR, "fix crush: only one fix crush may be defined");
+
+  vector_flag = 1;
+  size_vector = 3;
+  global_freq = 1;
+  extvector = 0;
+  peratom_flag = 1;
+  size_peratom_cols = 3;
+  peratom_freq = 1;
+  restart_global = 1;
+  force_reneighbor = 1;
+  next_reneighbor = -1;
+
+  irregular_ = new Irregular(lmp);
+  memory->create(limit_factor_, atom->ntypes + 1, atom->ntypes + 1, "crush:limit_factor");
+  recorder_.limit_factor = limit_factor_;
+  CrushMonitor::attach(lmp, &recorder_);
+
+  if (comm->me == 0 && !settings_.log_file.empty()) {
+    log_ = fopen(settings_.log_file.c_str(), "w");
+    if (!log_) {
+      const std::string msg = "fix crush: cannot open the event log '" + settings_.log_file + "' (keyword 'log')";
+      error->one(FLERR, msg.c_str());
+    }
+    fprintf(log_, "step,tag,diameter,generation,force_ratio,x,y,z");
+    const int nfrag = static_cast<int>(crush::fragment_layout(settings_.layout, 1.0).size());
+    for (int f = 1; f <= nfrag; f++) fprintf(log_, ",fragment_%d", f);
+    fprintf(log_, "\n");
+  }
+}
+
+FixCrush::~FixCrush()
+{
+  CrushMonitor::attach(lmp, NULL);
+  if (log_) fclose(log_);
+  delete irregular_;
+  memory->destroy(limit_factor_);
+  if (data_id_ && modify->find_fix(data_id_) >= 0) modify->delete_fix(data_id_);
+  delete[] data_id_;
+}
+
+// Per-atom data in a restartable fix property/atom: sigma_lim (-1 = not drawn yet), generation, ratio.
+void FixCrush::post_create()
+{
+  const std::string name = std::string("crush_data_") + id;
+  data_id_ = new char[name.size() + 1];
+  strcpy(data_id_, name.c_str());
+  const char *fixarg[11] = {data_id_, "all", "property/atom", data_id_, "vector", "yes", "no", "no",
+                            "-1.", "0.", "0."};
+  modify->add_fix(11, const_cast<char **>(fixarg));
+  fix_data_ = static_cast<FixPropertyAtom *>(
+      modify->find_fix_property(data_id_, "property/atom", "vector", 3, 0, style));
+}
+
+int FixCrush::setmask()
+{
+  return PRE_FORCE | END_OF_STEP | PRE_EXCHANGE;
+}
+
+void FixCrush::init()
+{
+  if (force->newton_pair)
+    error->all(FLERR, "fix crush needs 'newton off': each particle must see all of its contacts");
+  check_pair_style();
+  setup_limit_factors();
+  fix_data_ = static_cast<FixPropertyAtom *>(
+      modify->find_fix_property(data_id_, "property/atom", "vector", 3, 0, style));
+  if (settings_.dmin > 0.0) check_time_step(smallest_possible_radius());
+}
+
+void FixCrush::check_pair_style() const
+{
+  PairGran *pair = static_cast<PairGran *>(force->pair_match("gran", 0));
+  if (!pair || !pair->contact_match("normal", "hertz/scaled"))
+    error->all(FLERR, "fix crush needs 'pair_style gran model hertz/scaled ...': that contact model "
+                      "supplies the contact forces F_n / F_lim of the breakage check");
+}
+
+// (3/(4 E'))^2 per type pair, E' of eq. 4 from the types' youngsModulus and poissonsRatio.
+void FixCrush::setup_limit_factors()
+{
+  const int ntypes = atom->ntypes;
+  for (int a = 1; a <= ntypes; a++)
+    for (int b = 1; b <= ntypes; b++) {
+      double Ea, nua, Eb, nub;
+      material_of_type(a, &Ea, &nua);
+      material_of_type(b, &Eb, &nub);
+      try {
+        const double E_eff = crush::effective_modulus({Ea, nua}, {Eb, nub});
+        const double c = 3.0 / (4.0 * E_eff);
+        limit_factor_[a][b] = c * c;
+      } catch (const crush::ModelError &e) {
+        const std::string msg = std::string("fix crush: youngsModulus/poissonsRatio: ") + e.what();
+        error->all(FLERR, msg.c_str());
+      }
+    }
+}
+
+// Young's modulus and Poisson ratio of an atom type; returns the shear modulus.
+double FixCrush::material_of_type(int type, double *youngs, double *poisson) const
+{
+  const int ntypes = atom->ntypes;
+  FixPropertyGlobal *E = static_cast<FixPropertyGlobal *>(
+      modify->find_fix_property("youngsModulus", "property/global", "peratomtype", ntypes, 0, style));
+  FixPropertyGlobal *nu = static_cast<FixPropertyGlobal *>(
+      modify->find_fix_property("poissonsRatio", "property/global", "peratomtype", ntypes, 0, style));
+  *youngs = E->compute_vector(type - 1);
+  *poisson = nu->compute_vector(type - 1);
+  return *youngs / (2.0 * (1.0 + *poisson));
+}
+
+void FixCrush::refresh_recorder()
+{
+  recorder_.data = fix_data_->array_atom;
+  recorder_.nlocal = atom->nlocal;
+  array_atom = fix_data_->array_atom;
+}
+
+void FixCrush::draw_missing_strengths()
+{
+  double **data = fix_data_->array_atom;
+  const int *tag = atom->tag;
+  const double *radius = atom->radius;
+  for (int i = 0; i < atom->nlocal; i++)
+    if (data[i][STRENGTH] < 0.0)
+      data[i][STRENGTH] = settings_.size_scaled(strength_.draw(tag[i]), 2.0 * radius[i]);
+}
+
+void FixCrush::setup_pre_force(int vflag)
+{
+  if (initial_largest_diameter_ == 0.0) {
+    double dmax = 0.0;
+    for (int i = 0; i < atom->nlocal; i++)
+      if (atom->mask[i] & groupbit) dmax = std::max(dmax, 2.0 * atom->radius[i]);
+    MPI_Allreduce(&dmax, &initial_largest_diameter_, 1, MPI_DOUBLE, MPI_MAX, world);
+  }
+  pre_force(vflag);
+}
+
+void FixCrush::pre_force(int)
+{
+  refresh_recorder();
+  draw_missing_strengths();
+  double **data = fix_data_->array_atom;
+  for (int i = 0; i < atom->nlocal; i++) data[i][RATIO] = 0.0;
+}
+
+void FixCrush::end_of_step()
+{
+  double **data = fix_data_->array_atom;
+  array_atom = data;
+  const int *mask = atom->mask;
+  const double *radius = atom->radius;
+  const bool check = update->ntimestep % settings_.every == 0;
+  double local_max = 0.0;
+  std::vector<int> mothers;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(mask[i] & groupbit)) continue;
+    const double ratio = data[i][RATIO];
+    local_max = std::max(local_max, ratio);
+    if (check && ratio >= 1.0 && 2.0 * radius[i] >= settings_.dmin) mothers.push_back(i);
+  }
+  MPI_Allreduce(&local_max, &max_ratio_, 1, MPI_DOUBLE, MPI_MAX, world);
+  if (!check) return;
+  int nlocal_events = static_cast<int>(mothers.size()), nevents = 0;
+  MPI_Allreduce(&nlocal_events, &nevents, 1, MPI_INT, MPI_SUM, world);
+  if (nevents == 0) return;
+  pending_ = gather_events(mothers);
+  next_reneighbor = update->ntimestep + 1;
+}
+
+// All processors get every event, sorted by tag: the order that numbers the fragments.
+std::vector<FixCrush::Event> FixCrush::gather_events(const std::vector<int> &local_mothers)
+{
+  const int width = sizeof(Event) / sizeof(double);
+  std::vector<double> mine;
+  double **data = fix_data_->array_atom;
+  for (int i : local_mothers) {
+    const Event e = {static_cast<double>(atom->tag[i]), 2.0 * atom->radius[i], data[i][GENERATION],
+                     data[i][RATIO], {atom->x[i][0], atom->x[i][1], atom->x[i][2]}};
+    mine.insert(mine.end(), reinterpret_cast<const double *>(&e), reinterpret_cast<const double *>(&e) + width);
+  }
+  const int nprocs = comm->nprocs;
+  std::vector<int> counts(nprocs), displs(nprocs);
+  int count = static_cast<int>(mine.size());
+  MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
+  int total = 0;
+  for (int p = 0; p < nprocs; p++) {
+    displs[p] = total;
+    total += counts[p];
+  }
+  std::vector<double> all(total);
+  MPI_Allgatherv(mine.data(), count, MPI_DOUBLE, all.data(), counts.data(), displs.data(), MPI_DOUBLE, world);
+  std::vector<Event> events(total / width);
+  std::memcpy(events.data(), all.data(), total * sizeof(double));
+  std::sort(events.begin(), events.end(), [](const Event &a, const Event &b) { return a.tag < b.tag; });
+  return events;
+}
+
+void FixCrush::pre_exchange()
+{
+  if (next_reneighbor != update->ntimestep || pending_.empty()) return;
+  replace_mothers();
+  pending_.clear();
+  next_reneighbor = -1;
+}
+
+void FixCrush::replace_mothers()
+{
+  const int nfrag = static_cast<int>(crush::fragment_layout(settings_.layout, 1.0).size());
+  // New tags follow every tag in use (and every tag ever given), in the agreed event order.
+  int maxtag = 0, maxtag_all = 0;
+  for (int i = 0; i < atom->nlocal; i++) maxtag = std::max(maxtag, atom->tag[i]);
+  MPI_Allreduce(&maxtag, &maxtag_all, 1, MPI_INT, MPI_MAX, world);
+  const double first = std::max(static_cast<double>(maxtag_all) + 1.0, next_tag_);
+  if (first + static_cast<double>(nfrag) * pending_.size() > 2147483647.0)
+    error->all(FLERR, "fix crush: particle tags would exceed the largest 32-bit integer");
+  log_events(pending_, static_cast<int>(first));
+
+  const double volume_before = [&] {
+    double v = 0.0;
+    for (int i = 0; i < atom->nlocal; i++) v += crush::sphere_volume(2.0 * atom->radius[i]);
+    return v;
+  }();
+  std::vector<int> mothers;
+  double smallest = 0.0;
+  for (std::size_t k = 0; k < pending_.size(); k++) {
+    const int i = atom->map(static_cast<int>(pending_[k].tag));
+    if (i < 0 || i >= atom->nlocal) continue;  // owned by another processor
+    mothers.push_back(i);
+    create_fragments(i, static_cast<int>(first) + nfrag * static_cast<int>(k),
+                     static_cast<int>(pending_[k].generation) + 1);
+    const double d = 2.0 * crush::smallest_fragment_ratio(settings_.layout) * pending_[k].diameter / 2.0;
+    smallest = smallest == 0.0 ? d : std::min(smallest, d);
+  }
+  delete_mothers(mothers);
+  double volume_after = 0.0;
+  for (int i = 0; i < atom->nlocal; i++) volume_after += crush::sphere_volume(2.0 * atom->radius[i]);
+
+  // Books: the volume that left the particles is the removed volume, nothing else.
+  double removed_local = volume_before - volume_after, removed = 0.0;
+  MPI_Allreduce(&removed_local, &removed, 1, MPI_DOUBLE, MPI_SUM, world);
+  removed_volume_ += removed;
+  double smallest_all = 0.0, big = smallest > 0.0 ? smallest : 1e300;
+  MPI_Allreduce(&big, &smallest_all, 1, MPI_DOUBLE, MPI_MIN, world);
+  if (smallest_all < 1e300)
+    smallest_fragment_diameter_ = smallest_fragment_diameter_ == 0.0 ? smallest_all
+                                                                    : std::min(smallest_fragment_diameter_, smallest_all);
+  events_total_ += pending_.size();
+  next_tag_ = first + static_cast<double>(nfrag) * pending_.size();
+  atom->natoms += static_cast<bigint>(nfrag - 1) * static_cast<bigint>(pending_.size());
+
+  atom->nghost = 0;
+  atom->map_init();
+  atom->map_set();
+  // Fragments may lie outside this sub-domain or the periodic box: remap and migrate them.
+  domain->pbc();
+  domain->reset_box();
+  if (irregular_->migrate_check()) irregular_->migrate_atoms();
+
+  if (settings_.dmin <= 0.0) {
+    double rmin = 1e300, rmin_all = 0.0;
+    for (int i = 0; i < atom->nlocal; i++) rmin = std::min(rmin, atom->radius[i]);
+    MPI_Allreduce(&rmin, &rmin_all, 1, MPI_DOUBLE, MPI_MIN, world);
+    check_time_step(rmin_all);
+  }
+}
+
+void FixCrush::create_fragments(int mother, int first_tag, int generation)
+{
+  // Copy the mother: creating atoms may reallocate every per-atom array.
+  const int type = atom->type[mother], mask = atom->mask[mother], tag = atom->tag[mother];
+  const tagint image = atom->image[mother];
+  const double R = atom->radius[mother], density = atom->density[mother];
+  double xm[3], vm[3], wm[3];
+  for (int k = 0; k < 3; k++) {
+    xm[k] = atom->x[mother][k];
+    vm[k] = atom->v[mother][k];
+    wm[k] = atom->omega[mother][k];
+  }
+  std::vector<crush::Fragment> fragments = crush::fragment_layout(settings_.layout, R);
+  if (settings_.random_orientation)
+    fragments = crush::rotated(fragments, crush::random_rotation(settings_.seed, static_cast<std::uint64_t>(tag)));
+
+  for (std::size_t f = 0; f < fragments.size(); f++) {
+    double coord[3];
+    for (int k = 0; k < 3; k++) coord[k] = xm[k] + fragments[f].offset[k];
+    atom->avec->create_atom(type, coord);
+    const int n = atom->nlocal - 1;
+    const double r = fragments[f].radius;
+    atom->tag[n] = first_tag + static_cast<int>(f);
+    atom->mask[n] = mask;
+    atom->image[n] = image;
+    atom->radius[n] = r;
+    atom->density[n] = density;
+    atom->rmass[n] = density * crush::sphere_volume(2.0 * r);
+    for (int k = 0; k < 3; k++) {
+      atom->v[n][k] = vm[k];
+      atom->omega[n][k] = wm[k];
+    }
+    for (int m = 0; m < modify->nfix; m++)
+      if (modify->fix[m]->create_attribute) modify->fix[m]->set_arrays(n);
+    double *data = fix_data_->array_atom[n];
+    data[STRENGTH] = settings_.size_scaled(strength_.draw(atom->tag[n]), 2.0 * r);
+    data[GENERATION] = generation;
+    data[RATIO] = 0.0;
+  }
+}
+
+// Deletes from the highest index down, so that no pending index is moved before it is deleted.
+void FixCrush::delete_mothers(std::vector<int> &mothers)
+{
+  std::sort(mothers.begin(), mothers.end());
+  for (std::size_t k = mothers.size(); k-- > 0;) {
+    atom->avec->copy(atom->nlocal - 1, mothers[k], 1);
+    atom->nlocal--;
+  }
+}
+
+void FixCrush::log_events(const std::vector<Event> &events, int first_new_tag)
+{
+  if (!log_) return;
+  const int nfrag = static_cast<int>(crush::fragment_layout(settings_.layout, 1.0).size());
+  for (std::size_t k = 0; k < events.size(); k++) {
+    const Event &e = events[k];
+    fprintf(log_, BIGINT_FORMAT ",%.0f,%.10g,%.0f,%.10g,%.10g,%.10g,%.10g", update->ntimestep - 1, e.tag,
+            e.diameter, e.generation, e.ratio, e.x[0], e.x[1], e.x[2]);
+    for (int f = 0; f < nfrag; f++) fprintf(log_, ",%d", first_new_tag + nfrag * static_cast<int>(k) + f);
+    fprintf(log_, "\n");
+  }
+  fflush(log_);
+}
+
+// The smallest particle that can exist: the smallest fragment of a grain just at dmin, or a smaller
+// particle already present.
+double FixCrush::smallest_possible_radius() const
+{
+  double rmin = 1e300, rmin_all = 0.0;
+  for (int i = 0; i < atom->nlocal; i++) rmin = std::min(rmin, atom->radius[i]);
+  MPI_Allreduce(&rmin, &rmin_all, 1, MPI_DOUBLE, MPI_MIN, world);
+  return std::min(rmin_all, crush::smallest_fragment_ratio(settings_.layout) * 0.5 * settings_.dmin);
+}
+
+void FixCrush::check_time_step(double smallest_radius) const
+{
+  if (!(smallest_radius < 1e300)) return;
+  // The stiffest, lightest material present sets the Rayleigh time.
+  double dt_limit = 1e300, density_min = 1e300;
+  for (int i = 0; i < atom->nlocal; i++) density_min = std::min(density_min, atom->density[i]);
+  double density_all = 0.0;
+  MPI_Allreduce(&density_min, &density_all, 1, MPI_DOUBLE, MPI_MIN, world);
+  if (!(density_all < 1e300)) return;
+  // Only the types of particles present count (wall types are not particles).
+  std::vector<int> present(atom->ntypes + 1, 0), present_all(atom->ntypes + 1, 0);
+  for (int i = 0; i < atom->nlocal; i++) present[atom->type[i]] = 1;
+  MPI_Allreduce(present.data(), present_all.data(), atom->ntypes + 1, MPI_INT, MPI_MAX, world);
+  for (int t = 1; t <= atom->ntypes; t++) {
+    if (!present_all[t]) continue;
+    double E, nu;
+    const double G = material_of_type(t, &E, &nu);
+    dt_limit = std::min(dt_limit, settings_.rayleigh_fraction *
+                                      crush::rayleigh_time_step(smallest_radius, density_all, {G, nu}));
+  }
+  if (update->dt > dt_limit) {
+    char msg[512];
+    snprintf(msg, sizeof(msg),
+             "fix crush: time step %g s exceeds %g s, %g of the Rayleigh time of the smallest particle "
+             "that can exist (radius %g m%s): reduce the timestep, raise 'dmin', or change "
+             "'rayleigh_fraction'",
+             update->dt, dt_limit, settings_.rayleigh_fraction, smallest_radius,
+             settings_.dmin > 0.0 ? ", a fragment of a grain at dmin" : ", present after crushing");
+    error->all(FLERR, msg);
+  }
+}
+
+double FixCrush::compute_vector(int n)
+{
+  if (n == 0) return events_total_;
+  if (n == 1) return removed_volume_;
+  return max_ratio_;
+}
+
+void FixCrush::write_restart(FILE *fp)
+{
+  double list[6] = {events_total_, removed_volume_, smallest_fragment_diameter_, initial_largest_diameter_,
+                    next_tag_, static_cast<double>(settings_.seed)};
+  if (comm->me == 0) {
+    int size = 6 * sizeof(double);
+    fwrite(&size, sizeof(int), 1, fp);
+    fwrite(list, sizeof(double), 6, fp);
+  }
+}
+
+void FixCrush::restart(char *buf)
+{
+  const double *list = reinterpret_cast<const double *>(buf);
+  events_total_ = list[0];
+  removed_volume_ = list[1];
+  smallest_fragment_diameter_ = list[2];
+  initial_largest_diameter_ = list[3];
+  next_tag_ = list[4];
+  if (static_cast<std::uint64_t>(list[5]) != settings_.seed && comm->me == 0)
+    error->warning(FLERR, "fix crush: the restart file was written with another 'seed'");
+}

@@ -1,0 +1,92 @@
+/* ----------------------------------------------------------------------
+   liggghts-crush: fix crush, grain crushing by replacement with inscribed fragments
+   (Ciantia et al. 2014). See doc/fix_crush.txt.
+
+   Per step: pre_force() clears each particle's largest F_n / F_lim, which the hertz/scaled contact
+   model records through the CrushRecorder during the pair and wall force computations;
+   end_of_step() finds the particles that reached their limit, agrees on them across processors
+   (sorted by tag, so fragment tags and strengths never depend on the decomposition), logs them, and
+   schedules a reneighboring; pre_exchange() of the next step replaces each by its fragments.
+   The physics (limit, strengths, layout, grading) is in the plain crush_*.h files.
+------------------------------------------------------------------------- */
+#ifdef FIX_CLASS
+
+FixStyle(crush,FixCrush)
+
+#else
+
+#ifndef LMP_FIX_CRUSH_H
+#define LMP_FIX_CRUSH_H
+
+#include <cstdio>
+#include <vector>
+
+#include "crush_settings.h"
+#include "crush_strength.h"
+#include "fix.h"
+#include "fix_crush_monitor.h"
+
+namespace LAMMPS_NS {
+
+class FixCrush : public Fix {
+ public:
+  FixCrush(class LAMMPS *, int, char **);
+  ~FixCrush();
+  void post_create();
+  int setmask();
+  void init();
+  void setup_pre_force(int);
+  void pre_force(int);
+  void end_of_step();
+  void pre_exchange();
+  double compute_vector(int);
+  void write_restart(FILE *);
+  void restart(char *);
+
+  // For compute crush/gsd.
+  const crush::CrushSettings &settings() const { return settings_; }
+  double removed_volume() const { return removed_volume_; }
+  double smallest_fragment_diameter() const { return smallest_fragment_diameter_; }
+  double initial_largest_diameter() const { return initial_largest_diameter_; }
+
+ private:
+  // One breakage: the mother's data as agreed by all processors.
+  struct Event {
+    double tag, diameter, generation, ratio, x[3];
+  };
+
+  void check_pair_style() const;
+  void setup_limit_factors();
+  void refresh_recorder();
+  void draw_missing_strengths();
+  void check_time_step(double smallest_radius) const;
+  double smallest_possible_radius() const;
+  std::vector<Event> gather_events(const std::vector<int> &local_mothers);
+  void log_events(const std::vector<Event> &events, int first_new_tag);
+  void replace_mothers();
+  void create_fragments(int mother, int first_tag, int generation);
+  void delete_mothers(std::vector<int> &mothers);
+  double material_of_type(int type, double *youngs, double *poisson) const;
+
+  crush::CrushSettings settings_;
+  crush::StrengthDraw strength_;
+  class FixPropertyAtom *fix_data_;  // per atom: sigma_lim (Pa), generation, last F_n/F_lim
+  char *data_id_;
+  CrushRecorder recorder_;
+  double **limit_factor_;            // per type pair: (3/(4 E'))^2
+  class Irregular *irregular_;
+  FILE *log_;
+
+  std::vector<Event> pending_;       // agreed at end_of_step, replaced at the next pre_exchange
+  double events_total_;
+  double removed_volume_;
+  double max_ratio_;
+  double smallest_fragment_diameter_;
+  double initial_largest_diameter_;
+  double next_tag_;
+};
+
+}  // namespace LAMMPS_NS
+
+#endif
+#endif

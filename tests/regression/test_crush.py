@@ -1,0 +1,220 @@
+#!/usr/bin/env python3
+"""Deck tests of fix crush and compute crush/gsd, run by the built liggghts.
+
+  python3 test_crush.py LIGGGHTS WORKDIR CASE [RANKS]
+"""
+import math
+import os
+import shutil
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from liggghts_run import printed, read_dump, run_deck  # noqa: E402
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+CRUSH = os.path.join(os.path.dirname(os.path.abspath(__file__)), "crush")
+SINGLE = os.path.join(ROOT, "examples", "single_grain", "in.single_grain")
+N0 = 512  # particles of the compression decks
+
+
+def check(condition, message):
+    if not condition:
+        raise AssertionError(message)
+    print("ok: " + message)
+
+
+def read_events(path):
+    with open(path) as f:
+        lines = f.read().splitlines()
+    header = lines[0].split(",")
+    return [dict(zip(header, line.split(","))) for line in lines[1:]]
+
+
+def read_thermo(log):
+    """Rows of the thermo output (dicts keyed by the header) from a LIGGGHTS log file."""
+    rows, header = [], None
+    for line in open(log, errors="replace"):
+        words = line.split()
+        if words and words[0] == "Step":
+            header = words
+            continue
+        if header and len(words) == len(header):
+            try:
+                rows.append(dict(zip(header, map(float, words))))
+            except ValueError:
+                header = None
+        elif header and words and not words[0].lstrip("-").isdigit():
+            header = None
+    return rows
+
+
+def case_single_grain(liggghts, work):
+    """A grain pushed onto a plane breaks when the wall force reaches the analytic F_lim, into the
+    14 fragments of the layout; counts and volume books balance."""
+    rate, dt = 8.0, 1e-8
+    out = run_deck(liggghts, SINGLE, work)
+    f_lim = printed(out, "F_LIM")
+    # by hand: E' = 1/((1-0.09)/7.8e9 + (1-0.0841)/210e9), F_lim = (1e8 pi)^3 (3e-4/(4 E'))^2
+    e_eff = 1.0 / ((1 - 0.09) / 7.8e9 + (1 - 0.29 ** 2) / 210e9)
+    check(abs(f_lim / ((1e8 * math.pi) ** 3 * (3e-4 / (4 * e_eff)) ** 2) - 1) < 1e-12, "F_lim = %.6g N" % f_lim)
+    events = read_events(os.path.join(work, "crush_events.csv"))
+    check(len(events) == 1, "exactly one crushing event")
+    step = int(events[0]["step"])
+    applied = rate * step * dt
+    check(abs(applied / f_lim - 1) < 0.01, "breaks at applied force %.6g N = %.4f F_lim" % (applied, applied / f_lim))
+    check(float(events[0]["force_ratio"]) >= 1.0, "logged F_n/F_lim %.6f >= 1" % float(events[0]["force_ratio"]))
+    # fragments right after their creation (fixed orientation): the 14-ball layout around the mother
+    snaps = [s for s in read_dump(os.path.join(work, "fragments.dump")) if len(s[2]) == 14]
+    check(snaps and snaps[0][0] == step + 1, "14 particles one step after the event")
+    mother = [float(events[0][k]) for k in ("x", "y", "z")]
+    R = 1e-4
+    a, r1 = 2 - math.sqrt(2), math.sqrt(2) - 1
+    s = 1 + r1
+    b = (s * s - a * a) / (2 * s - 2 * a / math.sqrt(3))
+    expected = [(tuple(a * R * (k == axis) * sign for k in range(3)), r1 * R)
+                for axis in range(3) for sign in (1, -1)]
+    expected += [((sx * b * R / math.sqrt(3), sy * b * R / math.sqrt(3), sz * b * R / math.sqrt(3)), (1 - b) * R)
+                 for sx in (1, -1) for sy in (1, -1) for sz in (1, -1)]
+    rows = snaps[0][2]
+    worst_r = max(abs(row["radius"] - e[1]) / R for row, e in zip(rows, expected))
+    check(worst_r < 1e-12, "fragment radii match the layout (%.1e R)" % worst_r)
+    worst_x = max(math.dist([row[k] - m for k, m in zip("xyz", mother)], e[0]) / R for row, e in zip(rows, expected))
+    check(worst_x < 1e-4, "fragment centres match the layout to %.1e R (the mother moved for one step)" % worst_x)
+    check([int(row["id"]) for row in rows] == list(range(2, 16)), "fragments carry tags 2..15")
+    v_mother = 4 / 3 * math.pi * R ** 3
+    v_frag = sum(4 / 3 * math.pi * row["radius"] ** 3 for row in rows)
+    thermo = read_thermo(os.path.join(work, "log.liggghts"))
+    removed = thermo[-1]["crush[2]"]
+    check(abs(v_frag + removed - v_mother) / v_mother < 1e-12, "fragments + removed volume = mother volume")
+    check(abs(v_frag / v_mother - 0.523861) < 1e-6, "fragments keep 52.386% of the volume")
+
+
+def case_single_grain_ranks(liggghts, work):
+    """The single-grain case on 1, 2 and 4 ranks (the grain sits on the processor boundary): the
+    same tags break at the same step into the same fragment tags."""
+    logs = {}
+    for ranks in (1, 2, 4):
+        run_deck(liggghts, SINGLE, os.path.join(work, "np%d" % ranks), ranks=ranks)
+        logs[ranks] = open(os.path.join(work, "np%d" % ranks, "crush_events.csv")).read().splitlines()
+    check(len(logs[1]) == 2, "one event")
+    for ranks in (2, 4):
+        a = [line.split(",") for line in logs[1]]
+        b = [line.split(",") for line in logs[ranks]]
+        same = all(x[:2] + x[3:4] + x[8:] == y[:2] + y[3:4] + y[8:] for x, y in zip(a, b))
+        check(same, "%d ranks: same step, tag, generation and fragment tags as 1 rank" % ranks)
+
+
+def compression(liggghts, work, ranks):
+    run_deck(liggghts, os.path.join(CRUSH, "in.compression"), work, {"log": "events.csv", "out": "final.dump"},
+             ranks=ranks)
+    return read_thermo(os.path.join(work, "log.liggghts"))
+
+
+def case_compression(liggghts, work, ranks=1):
+    """Compression with crushing on RANKS ranks: the invariants hold at every thermo step; strengths
+    are a function of the tag alone (identical to the 1-rank run)."""
+    ranks = int(ranks)
+    thermo = compression(liggghts, os.path.join(work, "run"), ranks)
+    check(len(thermo) > 50, "%d thermo rows" % len(thermo))
+    v0 = thermo[0]["gsd"]
+    events = thermo[-1]["crush[1]"]
+    check(events >= 20, "%d crushing events" % events)
+    for row in thermo:
+        if row["Atoms"] != N0 + 13 * row["crush[1]"]:
+            raise AssertionError("step %d: %d particles, %d events" % (row["Step"], row["Atoms"], row["crush[1]"]))
+        if abs(row["gsd"] - v0) > 1e-12 * v0:
+            raise AssertionError("step %d: solid volume %.17g, initially %.17g" % (row["Step"], row["gsd"], v0))
+    check(True, "every thermo step: particles = 512 + 13 x events, particle + removed volume = initial (1e-12)")
+    final = read_dump(os.path.join(work, "run", "final.dump"))[-1][2]
+    tags = [int(r["id"]) for r in final]
+    check(len(tags) == len(set(tags)) == thermo[-1]["Atoms"], "%d unique tags, none lost" % len(tags))
+    volume = sum(4 / 3 * math.pi * r["radius"] ** 3 for r in final)
+    check(abs(volume + thermo[-1]["crush[2]"] - v0) / v0 < 1e-12, "final books balance")
+    events_log = read_events(os.path.join(work, "run", "events.csv"))
+    check(len(events_log) == events, "the event log has every event")
+    box = 8 * 0.00021
+    crossing = [e for e in events_log if min(float(e[k]) % (box * 0.88) for k in "xyz") < 0.0001]
+    print("note: %d events within a radius of a periodic face" % len(crossing))
+    if ranks > 1:
+        reference = os.path.join(work, "np1")
+        compression(liggghts, reference, 1)
+        a = open(os.path.join(reference, "strengths0.dump")).read()
+        b = open(os.path.join(work, "run", "strengths0.dump")).read()
+        check(a == b, "initial strengths identical to the 1-rank run, tag by tag")
+        ref_final = {int(r["id"]): r for r in read_dump(os.path.join(reference, "final.dump"))[-1][2]}
+        # Where the runs' histories part (summation order), a tag may name fragments of different
+        # mothers; for the same tag and size the strength must be the same.
+        common = [r for r in final if int(r["id"]) in ref_final
+                  and r["radius"] == ref_final[int(r["id"])]["radius"]]
+        same = all(r["f_crush[1]"] == ref_final[int(r["id"])]["f_crush[1]"] for r in common)
+        check(len(common) > N0 and same, "strengths of the %d particles with the same tag and size in both "
+                                         "runs are identical" % len(common))
+
+
+def case_restart(liggghts, work):
+    """write_restart in the middle of crushing, read_restart, continue: the same strengths, counters,
+    removed volume and event numbering as the uninterrupted run (here bit for bit)."""
+    run_deck(liggghts, os.path.join(CRUSH, "in.restart_first"), work, {"log": "first.csv", "out": "first.dump"})
+    mid = read_thermo(os.path.join(work, "log.liggghts"))
+    at3000 = [r for r in mid if r["Step"] == 3000][0]
+    check(at3000["crush[1]"] > 0, "crushing under way at the restart (%d events)" % at3000["crush[1]"])
+    second = os.path.join(work, "second")
+    os.makedirs(second, exist_ok=True)
+    for name in os.listdir(CRUSH):
+        shutil.copy(os.path.join(CRUSH, name), second)
+    shutil.copy(os.path.join(work, "mid.restart"), second)
+    out = run_deck(liggghts, os.path.join(second, "in.restart_second"), os.path.join(work, "run2"),
+                   {"log": "second.csv", "out": "second.dump"})
+    resumed = read_thermo(os.path.join(work, "run2", "log.liggghts"))
+    check(resumed[0]["crush[1]"] == at3000["crush[1]"] and resumed[0]["crush[2]"] == at3000["crush[2]"],
+          "counters and removed volume restored")
+    first_events = [e for e in read_events(os.path.join(work, "first.csv")) if int(e["step"]) >= 3000]
+    second_events = read_events(os.path.join(work, "run2", "second.csv"))
+    check(len(second_events) > 0 and first_events == second_events,
+          "the %d events after the restart are the same, with the same fragment tags" % len(second_events))
+    a = open(os.path.join(work, "first.dump")).read()
+    b = open(os.path.join(work, "run2", "second.dump")).read()
+    check(a == b, "final particles (tags, positions, strengths, generations) identical")
+    del out
+
+
+def case_bad_input(liggghts, work):
+    """Errors name the keyword and the expected value."""
+    crush_line = ("fix             crush all crush sigma_lim0 2e8 cv 1 weibull_m 10 d0 2e-3 seed 32452843 "
+                  "scale 1 &\n                dmin 0.0001 log ${log}\n")
+    cases = [
+        ("missing keyword", crush_line, crush_line.replace("weibull_m 10 ", ""), "'weibull_m' is required"),
+        ("negative cv", crush_line, crush_line.replace("cv 1", "cv -1"), "'cv' expects"),
+        ("zero scale", crush_line, crush_line.replace("scale 1", "scale 0"), "'scale' expects"),
+        ("unknown option", crush_line, crush_line.replace("scale 1", "scale 1 colour red"), "unknown keyword 'colour'"),
+        ("newton on", "newton          off\n", "newton          on\n", "newton pair off"),
+        ("time step", "timestep        1e-8\n", "timestep        5e-8\n", "exceeds"),
+        ("gsd without fix", "compute         gsd all crush/gsd crush", "compute         gsd all crush/gsd nofix",
+         "'nofix' is not the ID of a fix crush"),
+    ]
+    pair_case = ("pair style", "pair_style      gran model hertz/scaled tangential mindlin/scaled",
+                 "pair_style      gran model hertz tangential history", "hertz/scaled")
+    for label, old, new, expected in cases + [pair_case]:
+        deck_dir = os.path.join(work, label.replace(" ", "_"), "deck")
+        if os.path.isdir(deck_dir):
+            shutil.rmtree(deck_dir)
+        shutil.copytree(CRUSH, deck_dir)
+        edited = False
+        for name in ("in.crush_fixes", "in.compression_setup"):
+            path = os.path.join(deck_dir, name)
+            text = open(path).read()
+            if old in text:
+                open(path, "w").write(text.replace(old, new))
+                edited = True
+        if not edited:
+            raise AssertionError("test setup: '%s' not found" % old.strip())
+        out = run_deck(liggghts, os.path.join(deck_dir, "in.compression"), os.path.join(work, label.replace(" ", "_"), "run"),
+                       {"log": "ev.csv", "out": "f.dump"}, expect_fail=True)
+        check(expected.lower() in out.lower(), "%s -> error mentions '%s'" % (label, expected))
+
+
+if __name__ == "__main__":
+    liggghts, workdir, case = sys.argv[1:4]
+    os.makedirs(workdir, exist_ok=True)
+    globals()["case_" + case](os.path.abspath(liggghts), os.path.abspath(workdir), *sys.argv[4:])
+    print("PASSED " + case)

@@ -1,0 +1,95 @@
+// fix crush keywords: defaults, values, and errors that name the keyword.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "crush_model_error.h"
+#include "crush_settings.h"
+
+using namespace crush;
+
+namespace {
+const std::vector<std::string> required{"sigma_lim0", "5e9", "cv", "1", "weibull_m", "10",
+                                        "d0", "2e-3", "seed", "1234567"};
+
+std::string error_of(std::vector<std::string> args)
+{
+  try {
+    parse_crush_settings(args);
+  } catch (const ModelError &e) {
+    return e.what();
+  }
+  return "";
+}
+
+std::vector<std::string> with(std::vector<std::string> extra)
+{
+  std::vector<std::string> args = required;
+  args.insert(args.end(), extra.begin(), extra.end());
+  return args;
+}
+}  // namespace
+
+TEST(CrushSettings, RequiredAndDefaults)
+{
+  const CrushSettings c = parse_crush_settings(required);
+  EXPECT_EQ(c.sigma_lim0, 5e9);
+  EXPECT_EQ(c.cv, 1.0);
+  EXPECT_EQ(c.weibull_m, 10.0);
+  EXPECT_EQ(c.d0, 2e-3);
+  EXPECT_EQ(c.seed, 1234567u);
+  EXPECT_EQ(c.scale_factor, 1.0);
+  EXPECT_EQ(c.dmin, 0.0);
+  EXPECT_EQ(c.every, 1);
+  EXPECT_TRUE(c.random_orientation);
+  EXPECT_EQ(c.distribution, StrengthDistribution::normal);
+  EXPECT_TRUE(c.size_effect);
+  EXPECT_EQ(c.layout, FragmentLayout::fourteen);
+  EXPECT_EQ(c.fines_dimension, 2.5);
+  EXPECT_TRUE(c.log_file.empty());
+}
+
+TEST(CrushSettings, OptionalKeywords)
+{
+  const CrushSettings c = parse_crush_settings(
+      with({"scale", "2", "dmin", "5e-5", "every", "10", "orientation", "fixed", "distribution", "weibull",
+            "size_effect", "no", "layout", "tetrahedral", "fines_dimension", "2.6", "log", "ev.csv"}));
+  EXPECT_EQ(c.scale_factor, 2.0);
+  EXPECT_EQ(c.dmin, 5e-5);
+  EXPECT_EQ(c.every, 10);
+  EXPECT_FALSE(c.random_orientation);
+  EXPECT_EQ(c.distribution, StrengthDistribution::weibull);
+  EXPECT_FALSE(c.size_effect);
+  EXPECT_EQ(c.layout, FragmentLayout::tetrahedral);
+  EXPECT_EQ(c.fines_dimension, 2.6);
+  EXPECT_EQ(c.log_file, "ev.csv");
+  // size_effect no: sigma_lim = s whatever the size.
+  EXPECT_EQ(c.size_scaled(3e9, 1e-4), 3e9);
+}
+
+TEST(CrushSettings, SizeScaledUsesEq10WithN)
+{
+  const CrushSettings c = parse_crush_settings(with({"scale", "2"}));
+  // d = N d0: no correction.
+  EXPECT_DOUBLE_EQ(c.size_scaled(5e9, 4e-3), 5e9);
+}
+
+TEST(CrushSettings, ErrorsNameTheKeywordAndTheExpectedValue)
+{
+  EXPECT_NE(error_of({"cv", "1"}).find("'sigma_lim0' is required"), std::string::npos);
+  EXPECT_NE(error_of(with({"cv", "-1"})).find("'cv' expects a coefficient of variation >= 0"), std::string::npos);
+  EXPECT_NE(error_of(with({"weibull_m", "0"})).find("'weibull_m'"), std::string::npos);
+  EXPECT_NE(error_of(with({"d0", "abc"})).find("got 'abc'"), std::string::npos);
+  EXPECT_NE(error_of(with({"scale", "0"})).find("'scale' expects an upscaling factor N > 0"), std::string::npos);
+  EXPECT_NE(error_of(with({"dmin", "-1"})).find("'dmin'"), std::string::npos);
+  EXPECT_NE(error_of(with({"every", "1.5"})).find("'every' expects an integer >= 1"), std::string::npos);
+  EXPECT_NE(error_of(with({"orientation", "up"})).find("'random' or 'fixed'"), std::string::npos);
+  EXPECT_NE(error_of(with({"distribution", "lognormal"})).find("'normal', 'weibull' or 'constant'"),
+            std::string::npos);
+  EXPECT_NE(error_of(with({"size_effect", "maybe"})).find("'yes' or 'no'"), std::string::npos);
+  EXPECT_NE(error_of(with({"fines_dimension", "3"})).find("'fines_dimension'"), std::string::npos);
+  EXPECT_NE(error_of(with({"seed", "-5"})).find("'seed' expects a positive integer"), std::string::npos);
+  EXPECT_NE(error_of(with({"speed", "3"})).find("unknown keyword 'speed'"), std::string::npos);
+  EXPECT_NE(error_of(with({"log"})).find("'log' expects a value"), std::string::npos);
+}
