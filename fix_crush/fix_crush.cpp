@@ -50,9 +50,9 @@ FixCrush::FixCrush(LAMMPS *lmp, int narg, char **arg) :
   Fix(lmp, narg, arg),
   settings_(parse(error, narg, arg)),
   strength_(settings_.distribution, settings_.sigma_lim0, settings_.cv, settings_.weibull_m, settings_.seed),
-  fix_data_(NULL), data_id_(NULL), limit_factor_(NULL), irregular_(NULL), log_(NULL),
+  fix_data_(NULL), data_id_(NULL), inv_limit_factor_(NULL), irregular_(NULL), log_(NULL),
   events_total_(0.0), removed_volume_(0.0), max_ratio_(0.0), smallest_fragment_diameter_(0.0),
-  initial_largest_diameter_(0.0), next_tag_(0.0)
+  initial_largest_diameter_(0.0), next_tag_(0.0), replace_seconds_(0.0)
 {
   if (!atom->radius_flag || !atom->rmass_flag || !atom->density_flag)
     error->all(FLERR, "fix crush needs 'atom_style granular' (radius, mass and density per atom)");
@@ -63,7 +63,7 @@ FixCrush::FixCrush(LAMMPS *lmp, int narg, char **arg) :
       error->all(FLERR, "fix crush: only one fix crush may be defined");
 
   vector_flag = 1;
-  size_vector = 3;
+  size_vector = 4;
   global_freq = 1;
   extvector = 0;
   peratom_flag = 1;
@@ -74,8 +74,8 @@ FixCrush::FixCrush(LAMMPS *lmp, int narg, char **arg) :
   next_reneighbor = -1;
 
   irregular_ = new Irregular(lmp);
-  memory->create(limit_factor_, atom->ntypes + 1, atom->ntypes + 1, "crush:limit_factor");
-  recorder_.limit_factor = limit_factor_;
+  memory->create(inv_limit_factor_, atom->ntypes + 1, atom->ntypes + 1, "crush:inv_limit_factor");
+  recorder_.inv_limit_factor = inv_limit_factor_;
   CrushMonitor::attach(lmp, &recorder_);
 
   if (comm->me == 0 && !settings_.log_file.empty()) {
@@ -96,7 +96,7 @@ FixCrush::~FixCrush()
   CrushMonitor::attach(lmp, NULL);
   if (log_) fclose(log_);
   delete irregular_;
-  memory->destroy(limit_factor_);
+  memory->destroy(inv_limit_factor_);
   if (data_id_ && modify->find_fix(data_id_) >= 0) modify->delete_fix(data_id_);
   delete[] data_id_;
 }
@@ -138,7 +138,8 @@ void FixCrush::check_pair_style() const
                       "supplies the contact forces F_n / F_lim of the breakage check");
 }
 
-// (3/(4 E'))^2 per type pair, E' of eq. 4 from the types' youngsModulus and poissonsRatio.
+// (4 E'/3)^2 per type pair, E' of eq. 4 from the types' youngsModulus and poissonsRatio:
+// F_lim = (pi sigma_lim)^3 r'^2 / (4 E'/3)^2 (eq. 5).
 void FixCrush::setup_limit_factors()
 {
   const int ntypes = atom->ntypes;
@@ -149,8 +150,8 @@ void FixCrush::setup_limit_factors()
       material_of_type(b, &Eb, &nub);
       try {
         const double E_eff = crush::effective_modulus({Ea, nua}, {Eb, nub});
-        const double c = 3.0 / (4.0 * E_eff);
-        limit_factor_[a][b] = c * c;
+        const double c = 4.0 * E_eff / 3.0;
+        inv_limit_factor_[a][b] = c * c;
       } catch (const crush::ModelError &e) {
         const std::string msg = std::string("fix crush: youngsModulus/poissonsRatio: ") + e.what();
         error->all(FLERR, msg.c_str());
@@ -173,7 +174,12 @@ double FixCrush::material_of_type(int type, double *youngs, double *poisson) con
 
 void FixCrush::refresh_recorder()
 {
-  recorder_.data = fix_data_->array_atom;
+  load_.assign(atom->nlocal, 0.0);
+  recorder_.load = load_.data();
+  const int nall = atom->nlocal + atom->nghost;
+  inv_radius_.resize(nall);
+  for (int i = 0; i < nall; i++) inv_radius_[i] = 1.0 / atom->radius[i];
+  recorder_.inv_radius = inv_radius_.data();
   recorder_.nlocal = atom->nlocal;
   array_atom = fix_data_->array_atom;
 }
@@ -203,8 +209,6 @@ void FixCrush::pre_force(int)
 {
   refresh_recorder();
   draw_missing_strengths();
-  double **data = fix_data_->array_atom;
-  for (int i = 0; i < atom->nlocal; i++) data[i][RATIO] = 0.0;
 }
 
 void FixCrush::end_of_step()
@@ -216,9 +220,14 @@ void FixCrush::end_of_step()
   const bool check = update->ntimestep % settings_.every == 0;
   double local_max = 0.0;
   std::vector<int> mothers;
+  const double *load = load_.data();
   for (int i = 0; i < atom->nlocal; i++) {
+    // F_n / F_lim = load / (pi sigma_lim)^3; a particle of zero strength breaks under any load.
+    const double s = crush::pi * data[i][STRENGTH];
+    const double strength_term = s * s * s;
+    const double ratio = strength_term > 0.0 ? load[i] / strength_term : (load[i] > 0.0 ? HUGE_VAL : 0.0);
+    data[i][RATIO] = ratio;
     if (!(mask[i] & groupbit)) continue;
-    const double ratio = data[i][RATIO];
     local_max = std::max(local_max, ratio);
     if (check && ratio >= 1.0 && 2.0 * radius[i] >= settings_.dmin) mothers.push_back(i);
   }
@@ -262,7 +271,9 @@ std::vector<FixCrush::Event> FixCrush::gather_events(const std::vector<int> &loc
 void FixCrush::pre_exchange()
 {
   if (next_reneighbor != update->ntimestep || pending_.empty()) return;
+  const double start = MPI_Wtime();
   replace_mothers();
+  replace_seconds_ += MPI_Wtime() - start;
   pending_.clear();
   next_reneighbor = -1;
 }
@@ -439,7 +450,8 @@ double FixCrush::compute_vector(int n)
 {
   if (n == 0) return events_total_;
   if (n == 1) return removed_volume_;
-  return max_ratio_;
+  if (n == 2) return max_ratio_;
+  return replace_seconds_;
 }
 
 void FixCrush::write_restart(FILE *fp)

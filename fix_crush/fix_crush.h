@@ -73,7 +73,9 @@ class FixCrush : public Fix {
   class FixPropertyAtom *fix_data_;  // per atom: sigma_lim (Pa), generation, last F_n/F_lim
   char *data_id_;
   CrushRecorder recorder_;
-  double **limit_factor_;            // per type pair: (3/(4 E'))^2
+  double **inv_limit_factor_;        // per type pair: (4 E'/3)^2
+  std::vector<double> load_;         // per local atom: largest F_n (4 E'/3)^2 / r'^2 this step
+  std::vector<double> inv_radius_;   // per local and ghost atom: 1 / radius
   class Irregular *irregular_;
   FILE *log_;
 
@@ -84,6 +86,7 @@ class FixCrush : public Fix {
   double smallest_fragment_diameter_;
   double initial_largest_diameter_;
   double next_tag_;
+  double replace_seconds_;           // wall time spent in replace_mothers(), for the event cost
 };
 
 }  // namespace LAMMPS_NS

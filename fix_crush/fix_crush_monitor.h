@@ -2,8 +2,8 @@
    liggghts-crush: the link between the contact models and fix crush.
 
    A fix crush owns a CrushRecorder; the hertz/scaled normal model asks its CrushMonitor for it at
-   each contact and, when one exists, records F_n / F_lim (eq. 5/7/10) for the particle and, if it is
-   a local ball, for its partner. Without a fix crush the per-contact cost is one integer compare:
+   each contact and, when one exists, records the contact's load on the particle and, if it is a local
+   ball, on its partner (F_n / F_lim of eq. 5/7/10 once divided by the strength term). Without a fix crush the per-contact cost is one integer compare:
    the monitor re-resolves its recorder only when a crush fix was created or deleted.
 ------------------------------------------------------------------------- */
 #ifndef LMP_FIX_CRUSH_MONITOR_H
@@ -15,36 +15,30 @@ namespace LAMMPS_NS {
 
 class LAMMPS;
 
-// Records the largest F_n / F_lim per particle over its contacts during one force computation.
-// data[i] = {sigma_lim (Pa), generation, largest F_n / F_lim}: fix crush's per-atom array.
+// Records, per particle, the largest F_n / ((3/(4 E'))^2 r'^2) over its contacts during one force
+// computation. Fix crush divides it by (pi sigma_lim)^3 afterwards, which gives the largest
+// F_n / F_lim of eq. 5: the strength, a per-particle factor, stays out of the per-contact work.
 class CrushRecorder {
  public:
-  CrushRecorder() : data(0), nlocal(0), limit_factor(0) {}
+  CrushRecorder() : load(0), inv_radius(0), nlocal(0), inv_limit_factor(0) {}
 
-  // F_lim = (pi sigma_lim)^3 (3/(4 E'))^2 r'^2 (eq. 5) with limit_factor[itype][jtype] = (3/(4 E'))^2
-  // (1/Pa^2) and r' the contact's effective radius (m); F_n the elastic normal force (N).
-  inline void record(int i, int j, bool is_wall, int itype, int jtype, double radi, double radj,
-                     double normal_force) const
+  // inv_limit_factor[itype][jtype] = (4 E'/3)^2 (Pa^2); r' the contact's effective radius (m);
+  // F_n the elastic normal force (N).
+  inline void record(int i, int j, bool is_wall, int itype, int jtype, double normal_force) const
   {
-    const double r_eff = is_wall ? radi : radi * radj / (radi + radj);
-    const double base = limit_factor[itype][jtype] * r_eff * r_eff;
-    update(data[i], normal_force, base);
-    if (!is_wall && j < nlocal) update(data[j], normal_force, base);
+    // 1/r' = 1/r_i + 1/r_j (a plane: 1/r_i), from inverse radii computed once per step.
+    const double inv_r_eff = is_wall ? inv_radius[i] : inv_radius[i] + inv_radius[j];
+    const double value = normal_force * inv_limit_factor[itype][jtype] * inv_r_eff * inv_r_eff;
+    // Branch-free maxima: the comparisons are unpredictable, a mispredicted branch costs more than
+    // the store.
+    load[i] = load[i] > value ? load[i] : value;
+    if (!is_wall && j < nlocal) load[j] = load[j] > value ? load[j] : value;
   }
 
-  double **data;
+  double *load;              // per local atom (Pa^3)
+  const double *inv_radius;  // per local and ghost atom (1/m)
   int nlocal;
-  double **limit_factor;
-
- private:
-  static inline void update(double *d, double force, double base)
-  {
-    const double s = 3.14159265358979323846 * d[0];
-    const double limit = s * s * s * base;
-    // A particle of zero strength breaks under any compressive contact.
-    const double r = limit > 0.0 ? force / limit : (force > 0.0 ? HUGE_VAL : 0.0);
-    if (r > d[2]) d[2] = r;
-  }
+  double **inv_limit_factor;
 };
 
 // Resolves the recorder of the crush fix of one LAMMPS instance, if any.
