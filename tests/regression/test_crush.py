@@ -213,6 +213,25 @@ def case_bad_input(liggghts, work):
         check(expected.lower() in out.lower(), "%s -> error mentions '%s'" % (label, expected))
 
 
+def case_time_step_after_event(liggghts, work):
+    """Without dmin the time step is checked after every event against the particles present: the
+    single grain at a time step fine for it but too large for its fragments stops at the event."""
+    deck_dir = os.path.join(work, "deck")
+    if os.path.isdir(deck_dir):
+        shutil.rmtree(deck_dir)
+    os.makedirs(deck_dir)
+    text = open(SINGLE).read()
+    for old, new in (("timestep        1e-8", "timestep        3e-8"), (" dmin 1.9e-4", "")):
+        if old not in text:
+            raise AssertionError("test setup: '%s' not in the single-grain deck" % old)
+        text = text.replace(old, new)
+    open(os.path.join(deck_dir, "in.single_grain"), "w").write(text)
+    out = run_deck(liggghts, os.path.join(deck_dir, "in.single_grain"), os.path.join(work, "run"), expect_fail=True)
+    check("present after crushing" in out and "exceeds" in out,
+          "the run stops at the event with the time-step error naming both numbers")
+    check("Step" in out, "it ran before the event")
+
+
 if __name__ == "__main__":
     liggghts, workdir, case = sys.argv[1:4]
     os.makedirs(workdir, exist_ok=True)
