@@ -1,0 +1,260 @@
+/* ----------------------------------------------------------------------
+   liggghts-crush: fix wall/servo (see fix_wall_servo.h).
+------------------------------------------------------------------------- */
+#include "fix_wall_servo.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstring>
+#include <string>
+
+#include "atom.h"
+#include "comm.h"
+#include "crush_load_ramp.h"
+#include "crush_model_error.h"
+#include "error.h"
+#include "fix_property_global.h"
+#include "force.h"
+#include "hertz_mindlin_scaled_law.h"
+#include "memory.h"
+#include "modify.h"
+#include "servo_wall_law.h"
+#include "update.h"
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+
+namespace {
+const char *const kAxis = "xyz";
+
+void expect(Error *error, bool ok, const std::string &message)
+{
+  if (!ok) error->all(FLERR, ("fix wall/servo: " + message).c_str());
+}
+}  // namespace
+
+FixWallServo::FixWallServo(LAMMPS *lmp, int narg, char **arg) :
+  Fix(lmp, narg, arg), wall_type_(0), sigma_start_(1e3), sigma_max_(0.0), load_rate_(0.0), sigma_ref_(1e3),
+  target_(0.0), alpha_(0.5), max_step_(0.0), normal_coeff_(NULL), ramp_started_(false), monitor_(lmp)
+{
+  expect(error, narg >= 9, "expected 'fix ID group wall/servo xlo xhi ylo yhi zlo zhi type T x MODE y MODE z MODE'");
+  for (int k = 0; k < 6; k++) wall_[k] = force->numeric(FLERR, arg[3 + k]);
+  for (int a = 0; a < 3; a++) {
+    expect(error, wall_[2 * a + 1] > wall_[2 * a], std::string("the ") + kAxis[a] + "hi wall must lie above the " +
+                                                       kAxis[a] + "lo wall");
+    mode_[a] = FIXED;
+    value_[a] = 0.0;
+    force_[2 * a] = force_[2 * a + 1] = 0.0;
+  }
+  int iarg = 9;
+  while (iarg < narg) {
+    const std::string key = arg[iarg];
+    if (key == "type") {
+      expect(error, iarg + 1 < narg, "keyword 'type' expects the wall's atom type");
+      wall_type_ = force->inumeric(FLERR, arg[iarg + 1]);
+      expect(error, wall_type_ >= 1 && wall_type_ <= atom->ntypes, "keyword 'type' expects an atom type 1..ntypes");
+      iarg += 2;
+    } else if (key == "x" || key == "y" || key == "z") {
+      parse_mode(key[0] - 'x', narg, arg, iarg);
+    } else if (key == "ramp") {
+      expect(error, iarg + 3 < narg, "keyword 'ramp' expects sigma_start sigma_max load_rate [sigma_ref]");
+      sigma_start_ = force->numeric(FLERR, arg[iarg + 1]);
+      sigma_max_ = force->numeric(FLERR, arg[iarg + 2]);
+      load_rate_ = force->numeric(FLERR, arg[iarg + 3]);
+      iarg += 4;
+      if (iarg < narg && isdigit(arg[iarg][0])) sigma_ref_ = force->numeric(FLERR, arg[iarg++]);
+      expect(error, sigma_start_ > 0.0 && sigma_max_ >= sigma_start_,
+             "keyword 'ramp' expects 0 < sigma_start <= sigma_max (Pa)");
+      try {
+        crush::LoadRamp(load_rate_, sigma_ref_).steps_to_reach(sigma_start_, sigma_start_);
+      } catch (const crush::ModelError &e) {
+        expect(error, false, std::string("keyword 'ramp': ") + e.what());
+      }
+    } else if (key == "alpha") {
+      expect(error, iarg + 1 < narg, "keyword 'alpha' expects a value in (0, 1]");
+      alpha_ = force->numeric(FLERR, arg[iarg + 1]);
+      expect(error, alpha_ > 0.0 && alpha_ <= 1.0, "keyword 'alpha' expects a value in (0, 1]");
+      iarg += 2;
+    } else if (key == "max_step") {
+      expect(error, iarg + 1 < narg, "keyword 'max_step' expects a length > 0 (m)");
+      max_step_ = force->numeric(FLERR, arg[iarg + 1]);
+      expect(error, max_step_ > 0.0, "keyword 'max_step' expects a length > 0 (m)");
+      iarg += 2;
+    } else {
+      expect(error, false, "unknown keyword '" + key + "' (expected type, x, y, z, ramp, alpha or max_step)");
+    }
+  }
+  expect(error, wall_type_ > 0, "keyword 'type' (the walls' atom type, for their material) is required");
+  for (int a = 0; a < 3; a++)
+    expect(error, mode_[a] != RAMP || load_rate_ > 0.0,
+           std::string("axis ") + kAxis[a] + " is 'ramp' but no 'ramp sigma_start sigma_max load_rate' is given");
+  target_ = sigma_start_;
+
+  vector_flag = 1;
+  size_vector = 11;
+  global_freq = 1;
+  extvector = 0;
+  restart_global = 1;
+  memory->create(normal_coeff_, atom->ntypes + 1, 1, "wall/servo:normal_coeff");
+}
+
+FixWallServo::~FixWallServo()
+{
+  memory->destroy(normal_coeff_);
+}
+
+void FixWallServo::parse_mode(int axis, int narg, char **arg, int &iarg)
+{
+  const std::string name(1, kAxis[axis]);
+  expect(error, iarg + 1 < narg, "keyword '" + name + "' expects fixed, ramp, stress S or velocity V");
+  const std::string mode = arg[iarg + 1];
+  if (mode == "fixed") {
+    mode_[axis] = FIXED;
+    iarg += 2;
+  } else if (mode == "ramp") {
+    mode_[axis] = RAMP;
+    iarg += 2;
+  } else if (mode == "stress" || mode == "velocity") {
+    expect(error, iarg + 2 < narg, "keyword '" + name + " " + mode + "' expects a value");
+    mode_[axis] = mode == "stress" ? STRESS : VELOCITY;
+    value_[axis] = force->numeric(FLERR, arg[iarg + 2]);
+    expect(error, mode == "velocity" || value_[axis] > 0.0, "keyword '" + name + " stress' expects a stress > 0 (Pa)");
+    iarg += 3;
+  } else {
+    expect(error, false, "keyword '" + name + "' expects fixed, ramp, stress S or velocity V, got '" + mode + "'");
+  }
+}
+
+int FixWallServo::setmask()
+{
+  return POST_FORCE;
+}
+
+// The eq. 8 factor of each particle type against the wall type, from youngsModulus/poissonsRatio.
+void FixWallServo::init()
+{
+  const int ntypes = atom->ntypes;
+  FixPropertyGlobal *E = static_cast<FixPropertyGlobal *>(
+      modify->find_fix_property("youngsModulus", "property/global", "peratomtype", ntypes, 0, style));
+  FixPropertyGlobal *nu = static_cast<FixPropertyGlobal *>(
+      modify->find_fix_property("poissonsRatio", "property/global", "peratomtype", ntypes, 0, style));
+  auto material = [&](int t) {
+    const double Et = E->compute_vector(t - 1), nut = nu->compute_vector(t - 1);
+    return crush::ShearMaterial{Et / (2.0 * (1.0 + nut)), nut};
+  };
+  try {
+    for (int t = 1; t <= ntypes; t++)
+      normal_coeff_[t][0] = crush::hertz_mindlin_coefficients(material(t), material(wall_type_)).normal;
+  } catch (const crush::ModelError &e) {
+    error->all(FLERR, (std::string("fix wall/servo: youngsModulus/poissonsRatio: ") + e.what()).c_str());
+  }
+  if (max_step_ == 0.0) {
+    double rmin = 1e300, rmin_all = 0.0;
+    for (int i = 0; i < atom->nlocal; i++) rmin = std::min(rmin, atom->radius[i]);
+    MPI_Allreduce(&rmin, &rmin_all, 1, MPI_DOUBLE, MPI_MIN, world);
+    max_step_ = rmin_all < 1e300 ? 1e-3 * rmin_all : 1e-9;
+  }
+}
+
+void FixWallServo::setup(int)
+{
+  double force[6], stiffness[3];
+  apply_contacts(force, stiffness);
+  for (int k = 0; k < 6; k++) force_[k] = force[k];
+}
+
+void FixWallServo::post_force(int)
+{
+  double force[6], stiffness[3];
+  apply_contacts(force, stiffness);
+  for (int k = 0; k < 6; k++) force_[k] = force[k];
+  move_walls(force, stiffness);
+}
+
+// Hertz contacts of the local particles with the six walls: adds the forces, returns the total
+// compressive force on each wall and the contact stiffness dF/dU = 1.5 k_N of each hi wall.
+void FixWallServo::apply_contacts(double *force, double *stiffness)
+{
+  double local[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
+  double **x = atom->x, **f = atom->f;
+  const double *radius = atom->radius;
+  const int *mask = atom->mask, *type = atom->type;
+  const CrushRecorder *recorder = monitor_.recorder();
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(mask[i] & groupbit)) continue;
+    const double r = radius[i];
+    for (int a = 0; a < 3; a++)
+      for (int side = 0; side < 2; side++) {
+        const double gap = side == 0 ? x[i][a] - wall_[2 * a] : wall_[2 * a + 1] - x[i][a];
+        const double U = r - gap;
+        if (U <= 0.0) continue;
+        // eq. 8 with the wall convention: D1 D2/(D1+D2) -> D = 2r.
+        const double kn = normal_coeff_[type[i]][0] * std::sqrt(2.0 * r * U);
+        const double Fn = kn * U;
+        f[i][a] += side == 0 ? Fn : -Fn;
+        local[2 * a + side] += Fn;
+        if (side == 1) local[6 + a] += 1.5 * kn;
+        if (recorder) recorder->record(i, -1, true, type[i], wall_type_, Fn);
+      }
+  }
+  double all[9];
+  MPI_Allreduce(local, all, 9, MPI_DOUBLE, MPI_SUM, world);
+  for (int k = 0; k < 6; k++) force[k] = all[k];
+  for (int a = 0; a < 3; a++) stiffness[a] = all[6 + a];
+}
+
+// Every processor makes the same move from the same reduced numbers.
+void FixWallServo::move_walls(const double *force, const double *stiffness)
+{
+  if (load_rate_ > 0.0 && target_ < sigma_max_) {
+    target_ = std::min(sigma_max_, crush::LoadRamp(load_rate_, sigma_ref_).next(target_));
+  }
+  for (int a = 0; a < 3; a++) {
+    double &hi = wall_[2 * a + 1];
+    if (mode_[a] == VELOCITY) {
+      hi += value_[a] * update->dt;
+    } else if (mode_[a] == RAMP || mode_[a] == STRESS) {
+      const double sigma = mode_[a] == RAMP ? target_ : value_[a];
+      hi -= crush::servo_step(force[2 * a + 1], sigma * area(a), stiffness[a], alpha_, max_step_);
+    }
+  }
+}
+
+double FixWallServo::area(int axis) const
+{
+  const int b = (axis + 1) % 3, c = (axis + 2) % 3;
+  return (wall_[2 * b + 1] - wall_[2 * b]) * (wall_[2 * c + 1] - wall_[2 * c]);
+}
+
+// Mean compressive stress of the two walls of an axis (Pa).
+double FixWallServo::stress(int axis) const
+{
+  return 0.5 * (force_[2 * axis] + force_[2 * axis + 1]) / area(axis);
+}
+
+// [1-6] wall positions, [7-9] stresses sigma_x, sigma_y, sigma_z, [10] ramp target, [11] volume.
+double FixWallServo::compute_vector(int n)
+{
+  if (n < 6) return wall_[n];
+  if (n < 9) return stress(n - 6);
+  if (n == 9) return target_;
+  return (wall_[1] - wall_[0]) * (wall_[3] - wall_[2]) * (wall_[5] - wall_[4]);
+}
+
+void FixWallServo::write_restart(FILE *fp)
+{
+  double list[7] = {wall_[0], wall_[1], wall_[2], wall_[3], wall_[4], wall_[5], target_};
+  if (comm->me == 0) {
+    int size = 7 * sizeof(double);
+    fwrite(&size, sizeof(int), 1, fp);
+    fwrite(list, sizeof(double), 7, fp);
+  }
+}
+
+void FixWallServo::restart(char *buf)
+{
+  const double *list = reinterpret_cast<const double *>(buf);
+  for (int k = 0; k < 6; k++) wall_[k] = list[k];
+  target_ = list[6];
+}

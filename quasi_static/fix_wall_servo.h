@@ -1,0 +1,66 @@
+/* ----------------------------------------------------------------------
+   liggghts-crush: fix wall/servo, six smooth planar walls around a cuboid sample, each axis fixed,
+   stress-controlled (constant or the load ramp of eq. 11) or moved at a constant velocity
+   (strain control). See doc/fix_wall_servo.txt.
+
+   fix ID group wall/servo xlo xhi ylo yhi zlo zhi type T x MODE y MODE z MODE keyword value ...
+     MODE = fixed | ramp | stress S | velocity V
+     ramp sigma_start sigma_max load_rate [sigma_ref]    (eq. 11, natural log, default 1 kPa)
+     alpha a (servo relaxation, default 0.5)   max_step d (m per step, default 1e-3 r_min)
+
+   Contacts: the hertz/scaled normal law (eq. 8) with the wall type's material, no friction (smooth
+   walls); they feed a fix crush like pair contacts. The hi wall of a controlled axis moves; the lo
+   wall stays. The servo is PFC's, with the gain scaled by the wall's contact stiffness
+   (servo_wall_law.h).
+------------------------------------------------------------------------- */
+#ifdef FIX_CLASS
+
+FixStyle(wall/servo,FixWallServo)
+
+#else
+
+#ifndef LMP_FIX_WALL_SERVO_H
+#define LMP_FIX_WALL_SERVO_H
+
+#include "fix.h"
+#include "fix_crush_monitor.h"
+
+namespace LAMMPS_NS {
+
+class FixWallServo : public Fix {
+ public:
+  FixWallServo(class LAMMPS *, int, char **);
+  ~FixWallServo();
+  int setmask();
+  void init();
+  void setup(int);
+  void post_force(int);
+  double compute_vector(int);
+  void write_restart(FILE *);
+  void restart(char *);
+
+ private:
+  enum Mode { FIXED, RAMP, STRESS, VELOCITY };
+
+  void parse_mode(int axis, int narg, char **arg, int &iarg);
+  void apply_contacts(double *force, double *stiffness);
+  void move_walls(const double *force, const double *stiffness);
+  double area(int axis) const;
+  double stress(int axis) const;
+
+  double wall_[6];        // positions (m): xlo xhi ylo yhi zlo zhi
+  Mode mode_[3];
+  double value_[3];       // constant stress (Pa) or velocity (m/s) of each axis
+  int wall_type_;
+  double sigma_start_, sigma_max_, load_rate_, sigma_ref_, target_;
+  double alpha_, max_step_;
+  double force_[6];       // compressive force on each wall (N), last step
+  double **normal_coeff_; // per particle type: eq. 8 factor against the wall type
+  bool ramp_started_;
+  CrushMonitor monitor_;
+};
+
+}  // namespace LAMMPS_NS
+
+#endif
+#endif
