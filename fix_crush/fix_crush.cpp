@@ -52,7 +52,7 @@ FixCrush::FixCrush(LAMMPS *lmp, int narg, char **arg) :
   strength_(settings_.distribution, settings_.sigma_lim0, settings_.cv, settings_.weibull_m, settings_.seed),
   fix_data_(NULL), data_id_(NULL), inv_limit_factor_(NULL), irregular_(NULL), log_(NULL),
   events_total_(0.0), removed_volume_(0.0), max_ratio_(0.0), smallest_fragment_diameter_(0.0),
-  initial_largest_diameter_(0.0), next_tag_(0.0), replace_seconds_(0.0)
+  initial_largest_diameter_(0.0), next_tag_(0.0), replace_seconds_(0.0), particle_count_(0.0)
 {
   if (!atom->radius_flag || !atom->rmass_flag || !atom->density_flag)
     error->all(FLERR, "fix crush needs 'atom_style granular' (radius, mass and density per atom)");
@@ -196,6 +196,8 @@ void FixCrush::draw_missing_strengths()
 
 void FixCrush::setup_pre_force(int vflag)
 {
+  double n = atom->nlocal;
+  MPI_Allreduce(&n, &particle_count_, 1, MPI_DOUBLE, MPI_SUM, world);
   if (initial_largest_diameter_ == 0.0) {
     double dmax = 0.0;
     for (int i = 0; i < atom->nlocal; i++)
@@ -233,8 +235,20 @@ void FixCrush::end_of_step()
   }
   MPI_Allreduce(&local_max, &max_ratio_, 1, MPI_DOUBLE, MPI_MAX, world);
   if (!check) return;
-  int nlocal_events = static_cast<int>(mothers.size()), nevents = 0;
-  MPI_Allreduce(&nlocal_events, &nevents, 1, MPI_INT, MPI_SUM, world);
+  // One reduction: the events, and the particle count, so that particles lost through the box
+  // (which LIGGGHTS deletes silently by default) stop the run instead of unbalancing the books.
+  double local_counts[2] = {static_cast<double>(mothers.size()), static_cast<double>(atom->nlocal)}, counts[2];
+  MPI_Allreduce(local_counts, counts, 2, MPI_DOUBLE, MPI_SUM, world);
+  // Crushing only adds particles: fewer than at the last check means particles were lost.
+  if (counts[1] < particle_count_) {
+    char msg[320];
+    snprintf(msg, sizeof(msg), "fix crush: %.0f particles were lost during the run (they left the simulation "
+             "box, which LIGGGHTS allows silently): the volume books no longer balance; keep the particles "
+             "inside the box", particle_count_ - counts[1]);
+    error->all(FLERR, msg);
+  }
+  particle_count_ = counts[1];
+  const int nevents = static_cast<int>(counts[0]);
   if (nevents == 0) return;
   pending_ = gather_events(mothers);
   next_reneighbor = update->ntimestep + 1;
@@ -320,6 +334,7 @@ void FixCrush::replace_mothers()
     smallest_fragment_diameter_ = smallest_fragment_diameter_ == 0.0 ? smallest_all
                                                                     : std::min(smallest_fragment_diameter_, smallest_all);
   events_total_ += pending_.size();
+  particle_count_ += static_cast<double>(nfrag - 1) * pending_.size();
   next_tag_ = first + static_cast<double>(nfrag) * pending_.size();
   atom->natoms += static_cast<bigint>(nfrag - 1) * static_cast<bigint>(pending_.size());
 

@@ -87,6 +87,7 @@ class FixCrush : public Fix {
   double initial_largest_diameter_;
   double next_tag_;
   double replace_seconds_;           // wall time spent in replace_mothers(), for the event cost
+  double particle_count_;            // particles at the last check: losses stop the run
 };
 
 }  // namespace LAMMPS_NS

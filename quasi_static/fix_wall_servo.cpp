@@ -90,9 +90,10 @@ FixWallServo::FixWallServo(LAMMPS *lmp, int narg, char **arg) :
     expect(error, mode_[a] != RAMP || load_rate_ > 0.0,
            std::string("axis ") + kAxis[a] + " is 'ramp' but no 'ramp sigma_start sigma_max load_rate' is given");
   target_ = sigma_start_;
+  ramp_steps_ = load_rate_ > 0.0 ? crush::LoadRamp(load_rate_, sigma_ref_).steps_to_reach(sigma_start_, sigma_max_) : 0;
 
   vector_flag = 1;
-  size_vector = 11;
+  size_vector = 12;
   global_freq = 1;
   extvector = 0;
   restart_global = 1;
@@ -233,12 +234,14 @@ double FixWallServo::stress(int axis) const
   return 0.5 * (force_[2 * axis] + force_[2 * axis + 1]) / area(axis);
 }
 
-// [1-6] wall positions, [7-9] stresses sigma_x, sigma_y, sigma_z, [10] ramp target, [11] volume.
+// [1-6] wall positions, [7-9] stresses sigma_x, sigma_y, sigma_z, [10] ramp target, [11] volume,
+// [12] steps of the whole ramp (eq. 11) from sigma_start to sigma_max.
 double FixWallServo::compute_vector(int n)
 {
   if (n < 6) return wall_[n];
   if (n < 9) return stress(n - 6);
   if (n == 9) return target_;
+  if (n == 11) return ramp_steps_;
   return (wall_[1] - wall_[0]) * (wall_[3] - wall_[2]) * (wall_[5] - wall_[4]);
 }
 

@@ -53,6 +53,7 @@ class FixWallServo : public Fix {
   double value_[3];       // constant stress (Pa) or velocity (m/s) of each axis
   int wall_type_;
   double sigma_start_, sigma_max_, load_rate_, sigma_ref_, target_;
+  double ramp_steps_;
   double alpha_, max_step_;
   double force_[6];       // compressive force on each wall (N), last step
   double **normal_coeff_; // per particle type: eq. 8 factor against the wall type

@@ -213,6 +213,21 @@ def case_bad_input(liggghts, work):
         check(expected.lower() in out.lower(), "%s -> error mentions '%s'" % (label, expected))
 
 
+def case_particle_lost(liggghts, work):
+    """A particle that leaves the box (LIGGGHTS deletes it silently by default) stops the run."""
+    deck_dir = os.path.join(work, "deck")
+    if os.path.isdir(deck_dir):
+        shutil.rmtree(deck_dir)
+    os.makedirs(deck_dir)
+    text = open(SINGLE).read()
+    old = "fix             load all addforce 0.0 0.0 v_push"
+    if old not in text:
+        raise AssertionError("test setup: '%s' not in the single-grain deck" % old)
+    open(os.path.join(deck_dir, "in.single_grain"), "w").write(text.replace(old, "fix             load all addforce 0.0 0.0 1.0"))
+    out = run_deck(liggghts, os.path.join(deck_dir, "in.single_grain"), os.path.join(work, "run"), expect_fail=True)
+    check("1 particles were lost" in out, "the run stops: 'fix crush: 1 particles were lost ...'")
+
+
 def case_time_step_after_event(liggghts, work):
     """Without dmin the time step is checked after every event against the particles present: the
     single grain at a time step fine for it but too large for its fragments stops at the event."""
