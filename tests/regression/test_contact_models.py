@@ -179,6 +179,21 @@ def case_local_damping(liggghts, work):
               "alpha = %g: v_z = %.12g m/s (closed form %.12g)" % (alpha, vz, expected))
 
 
+def case_servo_wall(liggghts, work):
+    """fix wall/servo: the top wall settles where both wall contacts carry F = sigma A, with the
+    overlap of eq. 8 (plane convention Dt = D)."""
+    out = run_deck(liggghts, deck("in.servo"), work)
+    sigma, area, r = 1e4, 1e-6, 1e-4
+    F = sigma * area
+    # F = C_NORMAL sqrt(2 r U) U  ->  U = (F / (C_NORMAL sqrt(2 r)))^(2/3)
+    U = (F / (C_NORMAL * math.sqrt(2 * r))) ** (2.0 / 3.0)
+    check(abs(printed(out, "SIGMA_Z") / sigma - 1) < 1e-6, "wall stress %.9g Pa (target 1e4)" % printed(out, "SIGMA_Z"))
+    gap = printed(out, "ZHI") - printed(out, "ZLO")
+    check(abs(gap - (2 * r - 2 * U)) / U < 1e-4, "wall gap = 2r - 2U with U = %.6g m from eq. 8 (error %.1e U)"
+          % (U, abs(gap - (2 * r - 2 * U)) / U))
+    check(abs(printed(out, "Z_GRAIN") - (r - U)) / U < 1e-4, "the grain sits at r - U above the bottom wall")
+
+
 def case_bad_input(liggghts, work):
     """Errors name the keyword or property and what was expected."""
     cases = [
@@ -193,6 +208,10 @@ def case_bad_input(liggghts, work):
          [("damp/local alpha ${alpha}", "damp/local")], "keyword 'alpha' is required"),
         ("unknown damping keyword", "in.damping", {"alpha": 0.1},
          [("damp/local alpha ${alpha}", "damp/local alpha ${alpha} speed 3")], "unknown keyword 'speed'"),
+        ("servo wall without type", "in.servo", {},
+         [("z stress 1e4", "z stress 1e4"), (" type 2 x fixed", " x fixed")], "keyword 'type'"),
+        ("servo wall unknown mode", "in.servo", {}, [("z stress 1e4", "z push 1e4")], "expects fixed, ramp"),
+        ("ramp without parameters", "in.servo", {}, [("z stress 1e4", "z ramp")], "no 'ramp sigma_start"),
         ("Poisson ratio out of range", "in.impact", {},
          [("poissonsRatio peratomtype 0.3 0.3", "poissonsRatio peratomtype 0.6 0.6")], "poisson"),
         ("missing Poisson ratio", "in.impact", {},
