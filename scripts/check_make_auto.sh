@@ -45,4 +45,8 @@ exe="$tree/src/lmp_auto"
 [ -x "$exe" ] || { echo "make auto produced no $exe"; exit 1; }
 mkdir -p "$scratch/run" && cd "$scratch/run"
 "$exe" -in "$here/examples/smoke/in.smoke" | tee run.log | tail -3
+"$exe" -h > styles.txt 2>&1 || true
+for style in crush/gsd hertz/scaled mindlin/scaled damp/local wall/servo; do
+  grep -q "$style" styles.txt || { echo "make auto binary lacks the style $style"; exit 1; }
+done
 grep -q "SMOKE_DONE atoms=100" run.log && echo "make auto build: OK ($exe)"
