@@ -17,8 +17,8 @@
 #include "crush_model_error.h"
 #include "domain.h"
 #include "error.h"
+#include "fix_crush_materials.h"
 #include "fix_property_atom.h"
-#include "fix_property_global.h"
 #include "force.h"
 #include "irregular.h"
 #include "memory.h"
@@ -145,11 +145,9 @@ void FixCrush::setup_limit_factors()
   const int ntypes = atom->ntypes;
   for (int a = 1; a <= ntypes; a++)
     for (int b = 1; b <= ntypes; b++) {
-      double Ea, nua, Eb, nub;
-      material_of_type(a, &Ea, &nua);
-      material_of_type(b, &Eb, &nub);
       try {
-        const double E_eff = crush::effective_modulus({Ea, nua}, {Eb, nub});
+        const double E_eff = crush::effective_modulus(type_material(modify, ntypes, a, style),
+                                                      type_material(modify, ntypes, b, style));
         const double c = 4.0 * E_eff / 3.0;
         inv_limit_factor_[a][b] = c * c;
       } catch (const crush::ModelError &e) {
@@ -157,19 +155,6 @@ void FixCrush::setup_limit_factors()
         error->all(FLERR, msg.c_str());
       }
     }
-}
-
-// Young's modulus and Poisson ratio of an atom type; returns the shear modulus.
-double FixCrush::material_of_type(int type, double *youngs, double *poisson) const
-{
-  const int ntypes = atom->ntypes;
-  FixPropertyGlobal *E = static_cast<FixPropertyGlobal *>(
-      modify->find_fix_property("youngsModulus", "property/global", "peratomtype", ntypes, 0, style));
-  FixPropertyGlobal *nu = static_cast<FixPropertyGlobal *>(
-      modify->find_fix_property("poissonsRatio", "property/global", "peratomtype", ntypes, 0, style));
-  *youngs = E->compute_vector(type - 1);
-  *poisson = nu->compute_vector(type - 1);
-  return *youngs / (2.0 * (1.0 + *poisson));
 }
 
 void FixCrush::refresh_recorder()
@@ -444,10 +429,9 @@ void FixCrush::check_time_step(double smallest_radius) const
   MPI_Allreduce(present.data(), present_all.data(), atom->ntypes + 1, MPI_INT, MPI_MAX, world);
   for (int t = 1; t <= atom->ntypes; t++) {
     if (!present_all[t]) continue;
-    double E, nu;
-    const double G = material_of_type(t, &E, &nu);
+    const crush::ShearMaterial m = type_shear_material(modify, atom->ntypes, t, style);
     dt_limit = std::min(dt_limit, settings_.rayleigh_fraction *
-                                      crush::rayleigh_time_step(smallest_radius, density_all, {G, nu}));
+                                      crush::rayleigh_time_step(smallest_radius, density_all, m));
   }
   if (update->dt > dt_limit) {
     char msg[512];

@@ -66,7 +66,6 @@ class FixCrush : public Fix {
   void replace_mothers();
   void create_fragments(int mother, int first_tag, int generation);
   void delete_mothers(std::vector<int> &mothers);
-  double material_of_type(int type, double *youngs, double *poisson) const;
 
   crush::CrushSettings settings_;
   crush::StrengthDraw strength_;

@@ -14,7 +14,7 @@
 #include "crush_load_ramp.h"
 #include "crush_model_error.h"
 #include "error.h"
-#include "fix_property_global.h"
+#include "fix_crush_materials.h"
 #include "force.h"
 #include "hertz_mindlin_scaled_law.h"
 #include "memory.h"
@@ -136,17 +136,10 @@ int FixWallServo::setmask()
 void FixWallServo::init()
 {
   const int ntypes = atom->ntypes;
-  FixPropertyGlobal *E = static_cast<FixPropertyGlobal *>(
-      modify->find_fix_property("youngsModulus", "property/global", "peratomtype", ntypes, 0, style));
-  FixPropertyGlobal *nu = static_cast<FixPropertyGlobal *>(
-      modify->find_fix_property("poissonsRatio", "property/global", "peratomtype", ntypes, 0, style));
-  auto material = [&](int t) {
-    const double Et = E->compute_vector(t - 1), nut = nu->compute_vector(t - 1);
-    return crush::ShearMaterial{Et / (2.0 * (1.0 + nut)), nut};
-  };
   try {
     for (int t = 1; t <= ntypes; t++)
-      normal_coeff_[t][0] = crush::hertz_mindlin_coefficients(material(t), material(wall_type_)).normal;
+      normal_coeff_[t][0] = crush::hertz_mindlin_coefficients(type_shear_material(modify, ntypes, t, style),
+                                                                 type_shear_material(modify, ntypes, wall_type_, style)).normal;
   } catch (const crush::ModelError &e) {
     error->all(FLERR, (std::string("fix wall/servo: youngsModulus/poissonsRatio: ") + e.what()).c_str());
   }
