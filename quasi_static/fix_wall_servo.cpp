@@ -201,6 +201,7 @@ void FixWallServo::apply_contacts(double *force, double *stiffness)
 // Every processor makes the same move from the same reduced numbers.
 void FixWallServo::move_walls(const double *force, const double *stiffness)
 {
+  const double before = target_;
   if (load_rate_ > 0.0 && target_ < sigma_max_) {
     target_ = std::min(sigma_max_, crush::LoadRamp(load_rate_, sigma_ref_).next(target_));
   }
@@ -210,7 +211,8 @@ void FixWallServo::move_walls(const double *force, const double *stiffness)
       hi += value_[a] * update->dt;
     } else if (mode_[a] == RAMP || mode_[a] == STRESS) {
       const double sigma = mode_[a] == RAMP ? target_ : value_[a];
-      hi -= crush::servo_step(force[2 * a + 1], sigma * area(a), stiffness[a], alpha_, max_step_);
+      const double increment = mode_[a] == RAMP ? (target_ - before) * area(a) : 0.0;
+      hi -= crush::servo_step(force[2 * a + 1], sigma * area(a), stiffness[a], alpha_, max_step_, increment);
     }
   }
 }

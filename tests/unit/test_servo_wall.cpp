@@ -37,3 +37,22 @@ TEST(ServoWall, ConvergesOnAHertzianSampleAcrossFiveDecades)
     EXPECT_NEAR(c * std::pow(U, 1.5) / target, 1.0, 1e-6) << target;
   }
 }
+
+TEST(ServoWall, FeedForwardRemovesTheLagBehindARamp)
+{
+  // Hertzian wall contacts, target force growing by 1e-3 per step: after 2000 steps the lag is
+  // dF/alpha without feed-forward and far smaller with it.
+  const double c = 1e9, alpha = 0.05, rate = 1e-3;
+  auto track = [&](bool feed_forward) {
+    double U = std::pow(1.0 / c, 2.0 / 3.0), target = 1.0;
+    for (int step = 0; step < 2000; ++step) {
+      const double increment = rate * target;
+      target += increment;
+      const double F = c * std::pow(U, 1.5), k = 1.5 * c * std::sqrt(U);
+      U += servo_step(F, target, k, alpha, 1.0, feed_forward ? increment : 0.0);
+    }
+    return c * std::pow(U, 1.5) / target - 1.0;
+  };
+  EXPECT_NEAR(track(false), -rate / alpha, 0.2 * rate / alpha);  // about -2%
+  EXPECT_LT(std::fabs(track(true)), 1e-3);
+}
