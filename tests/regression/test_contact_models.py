@@ -6,6 +6,7 @@ liggghts. Each case asserts a value that would be wrong if the physics were wron
 """
 import math
 import os
+import shutil
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -168,6 +169,26 @@ def case_impact_energy(liggghts, work):
     check(printed(out, "VX_AFTER") > 0.0999, "the spheres rebounded")
 
 
+def case_impact_restitution(liggghts, work):
+    """'viscous_damping on' adds LIGGGHTS' restitution damping: a head-on impact with
+    coefficientRestitution 0.5 rebounds at about half its speed (the damping formula is exact for a
+    linear spring, close for Hertz)."""
+    src = os.path.join(work, "deck")
+    if os.path.isdir(src):
+        shutil.rmtree(src)
+    shutil.copytree(HERE, src)
+    for name, old, new in (("in.impact", "tangential mindlin/scaled\n", "tangential mindlin/scaled viscous_damping on\n"),
+                           ("in.materials", "peratomtypepair 2 1.0 1.0 1.0 1.0", "peratomtypepair 2 0.5 0.5 0.5 0.5")):
+        path = os.path.join(src, name)
+        text = open(path).read()
+        if old not in text:
+            raise AssertionError("test setup: '%s' not in %s" % (old.strip(), name))
+        open(path, "w").write(text.replace(old, new))
+    out = run_deck(liggghts, os.path.join(src, "in.impact"), os.path.join(work, "run"))
+    e = printed(out, "VX_AFTER") / 0.1
+    check(abs(e - 0.5) < 0.05, "coefficient of restitution %.4f (asked 0.5)" % e)
+
+
 def case_local_damping(liggghts, work):
     """Constant force m g, local damping alpha: with velocity Verlet, v_n = g dt [n (1-alpha) + alpha/2]
     (the first half step is undamped, v = 0); PFC's continuous form is v = (1-alpha) g t."""
@@ -223,9 +244,7 @@ def case_bad_input(liggghts, work):
         os.makedirs(path, exist_ok=True)
         src = os.path.join(path, "deck")
         if os.path.isdir(src):
-            import shutil
             shutil.rmtree(src)
-        import shutil
         shutil.copytree(HERE, src)
         target = os.path.join(src, "in.materials" if "oisson" in label else name)
         text = open(target).read()

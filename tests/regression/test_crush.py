@@ -87,6 +87,16 @@ def case_single_grain(liggghts, work):
     removed = thermo[-1]["crush[2]"]
     check(abs(v_frag + removed - v_mother) / v_mother < 1e-12, "fragments + removed volume = mother volume")
     check(abs(v_frag / v_mother - 0.523861) < 1e-6, "fragments keep 52.386% of the volume")
+    # compute crush/gsd: 8 small fragments (d = 0.046 mm) and the removed volume (fractal, D = 2.5,
+    # below the smallest fragment) pass 0.05 mm; 0.02 mm passes (0.02/0.046)^0.5 of the fines only.
+    small = 2 * (1 - b) * R
+    fines = removed / v_mother
+    small_share = 8 * (1 - b) ** 3
+    check(abs(printed(out, "PASSING_0.05MM") - 100 * (small_share + fines)) < 1e-9,
+          "GSD at 0.05 mm: %.6f%% (small fragments + fines)" % printed(out, "PASSING_0.05MM"))
+    check(abs(printed(out, "PASSING_0.02MM") - 100 * fines * math.sqrt(0.02e-3 / small)) < 1e-9,
+          "GSD at 0.02 mm: %.6f%% (fractal fines only)" % printed(out, "PASSING_0.02MM"))
+    check(abs(printed(out, "PASSING_0.1MM") - 100.0) < 1e-9, "GSD at 0.1 mm: 100%")
 
 
 def case_single_grain_ranks(liggghts, work):
