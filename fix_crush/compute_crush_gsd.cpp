@@ -79,6 +79,7 @@ void ComputeCrushGsd::sum_grains(std::vector<double> &sums) const
 
 double ComputeCrushGsd::compute_scalar()
 {
+  if (!fix_) init();  // 'run ... pre no' right after the compute was defined skips init()
   invoked_scalar = update->ntimestep;
   std::vector<double> sums;
   sum_grains(sums);
@@ -88,6 +89,7 @@ double ComputeCrushGsd::compute_scalar()
 
 void ComputeCrushGsd::compute_vector()
 {
+  if (!fix_) init();
   invoked_vector = update->ntimestep;
   std::vector<double> packed;
   sum_grains(packed);

@@ -52,7 +52,7 @@ FixCrush::FixCrush(LAMMPS *lmp, int narg, char **arg) :
   strength_(settings_.distribution, settings_.sigma_lim0, settings_.cv, settings_.weibull_m, settings_.seed),
   fix_data_(NULL), data_id_(NULL), inv_limit_factor_(NULL), irregular_(NULL), log_(NULL),
   events_total_(0.0), removed_volume_(0.0), max_ratio_(0.0), smallest_fragment_diameter_(0.0),
-  initial_largest_diameter_(0.0), next_tag_(0.0), replace_seconds_(0.0), particle_count_(0.0)
+  initial_largest_diameter_(0.0), next_tag_(0.0), replace_seconds_(0.0), particle_count_(0.0), initialized_(false)
 {
   if (!atom->radius_flag || !atom->rmass_flag || !atom->density_flag)
     error->all(FLERR, "fix crush needs 'atom_style granular' (radius, mass and density per atom)");
@@ -125,6 +125,7 @@ void FixCrush::init()
     error->all(FLERR, "fix crush needs 'newton off': each particle must see all of its contacts");
   check_pair_style();
   setup_limit_factors();
+  initialized_ = true;
   fix_data_ = static_cast<FixPropertyAtom *>(
       modify->find_fix_property(data_id_, "property/atom", "vector", 3, 0, style));
   if (settings_.dmin > 0.0) check_time_step(smallest_possible_radius());
@@ -194,6 +195,9 @@ void FixCrush::setup_pre_force(int vflag)
 
 void FixCrush::pre_force(int)
 {
+  if (!initialized_)
+    error->all(FLERR, "fix crush was defined after the last full run setup ('run ... pre no'): run once "
+                      "with 'pre yes' (or 'run 0') after defining it");
   refresh_recorder();
   draw_missing_strengths();
 }

@@ -87,6 +87,7 @@ class FixCrush : public Fix {
   double next_tag_;
   double replace_seconds_;           // wall time spent in replace_mothers(), for the event cost
   double particle_count_;            // particles at the last check: losses stop the run
+  bool initialized_;                 // init() ran: 'run pre no' right after the fix skips it
 };
 
 }  // namespace LAMMPS_NS

@@ -243,6 +243,11 @@ def case_fontainebleau_short(liggghts, work, deck="in.oedometer"):
     check(last["sigma_target"] > 4e5 and all(a["sigma_target"] < b["sigma_target"] for a, b in zip(rows, rows[1:])),
           "the ramp target rises (%.3g Pa at the last row)" % last["sigma_target"])
     check(0.6 < first["I_G"] < 0.75, "initial I_G %.3f (paper 0.735)" % first["I_G"])
+    with open(os.path.join(work, "gsd_%s2_1MPa.csv" % test)) as f:
+        gsd = [tuple(map(float, line.split(","))) for line in f.read().splitlines()[1:]]
+    passing = [p for _, p in gsd]
+    check(len(gsd) == 11 and all(a <= b for a, b in zip(passing, passing[1:])) and passing[-1] == 100.0
+          and passing[0] > 0.0, "gsd_%s2_1MPa.csv: 11 sieves, non-decreasing to 100%%, fines below 0.01 mm" % test)
 
 
 def case_particle_lost(liggghts, work):
