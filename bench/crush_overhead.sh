@@ -5,33 +5,23 @@
 #   bash bench/crush_overhead.sh [steps=2000] [repeats=3]
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
-liggghts=${LIGGGHTS:-$here/../build/liggghts}
 steps=${1:-2000}
 repeats=${2:-3}
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cp "$here"/in.dense_assembly "$here"/in.none "$here"/in.crush_idle "$here"/in.crush_all "$work"/
-
-run() {  # extra steps -> screen file
-  (cd "$work" && "$liggghts" -in in.dense_assembly -var model hertz/scaled -var tmodel mindlin/scaled \
-     -var steps "$2" -var extra "$1" -log none -screen screen.txt >/dev/null 2>&1 || { tail -5 screen.txt; exit 1; })
-}
-loop_time() { run "$1" "$steps"; awk '/^Loop time of/ {print $4}' "$work/screen.txt"; }
+source "$here/dense_assembly.sh"
 
 best_none=1e30; best_crush=1e30
 for r in $(seq "$repeats"); do
-  a=$(loop_time in.none); b=$(loop_time in.crush_idle)
+  a=$(loop_time hertz/scaled mindlin/scaled in.none); b=$(loop_time hertz/scaled mindlin/scaled in.crush_idle)
   echo "repeat $r: no fix ${a} s, fix crush (nothing breaks) ${b} s"
-  best_none=$(awk -v a="$best_none" -v b="$a" 'BEGIN{print (b<a)?b:a}')
-  best_crush=$(awk -v a="$best_crush" -v b="$b" 'BEGIN{print (b<a)?b:a}')
+  best_none=$(smaller "$best_none" "$a")
+  best_crush=$(smaller "$best_crush" "$b")
 done
 awk -v a="$best_none" -v b="$best_crush" -v n="$steps" 'BEGIN{
   printf "10976 particles, %d steps: without fix %.3f s, with fix crush %.3f s\n", n, a, b;
   printf "ratio with / without fix crush = %.3f (target <= 1.03)\n", b/a }'
 
-echo "print \"EVENTS \${events} SECONDS \${seconds}\"" >> "$work/in.crush_all"
 sed -i 's/^run             \${steps}$/run             ${steps}\nprint           "EVENTS ${events} SECONDS ${seconds}"/' "$work/in.dense_assembly"
-run in.crush_all 3
+dense_run hertz/scaled mindlin/scaled in.crush_all 3
 awk '/^EVENTS [0-9]/ {e=$2; s=$4} END {
   printf "every grain breaks once: %d events replaced in %.4f s: %.2f us per event, %.3f us per fragment\n",
          e, s, 1e6*s/e, 1e6*s/(14*e) }' "$work/screen.txt"

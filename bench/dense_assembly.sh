@@ -1,0 +1,21 @@
+# Shared by the benchmarks (sourced): runs bench/in.dense_assembly (10,976 dense spheres) in a scratch
+# folder and reports the LIGGGHTS loop time. Needs: here (the bench folder), steps.
+liggghts=${LIGGGHTS:-$here/../build/liggghts}
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cp "$here"/in.dense_assembly "$here"/in.none "$here"/in.crush_idle "$here"/in.crush_all "$work"/
+
+# dense_run MODEL TMODEL EXTRA STEPS: one run; its screen output is in $work/screen.txt.
+dense_run() {
+  (cd "$work" && "$liggghts" -in in.dense_assembly -var model "$1" -var tmodel "$2" -var extra "$3" \
+     -var steps "$4" -log none -screen screen.txt >/dev/null 2>&1 || { tail -5 screen.txt; exit 1; })
+}
+
+# loop_time MODEL TMODEL EXTRA: seconds of the run loop of $steps steps.
+loop_time() {
+  dense_run "$1" "$2" "$3" "$steps"
+  awk '/^Loop time of/ {print $4}' "$work/screen.txt"
+}
+
+# smaller A B: the smaller of two numbers.
+smaller() { awk -v a="$1" -v b="$2" 'BEGIN{print (b<a)?b:a}'; }
