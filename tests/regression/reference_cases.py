@@ -1,0 +1,40 @@
+"""The reference-log regression cases: a deck, its variables, the dump to compare, and the tolerance
+of each quantity (exact for counts and tags, relative for forces and positions)."""
+import os
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(os.path.dirname(HERE))
+
+EXACT = 0.0
+# Relative tolerances. Counts and tags are exact; continuous quantities of one deterministic serial
+# run on one toolchain agree to rounding, the tolerance leaves room for libm differences.
+TOLERANCES = {
+    "Step": EXACT, "Atoms": EXACT, "id": EXACT, "type": EXACT,
+    "crush[1]": EXACT,                               # events
+    "f_crush[2]": EXACT,                             # generation
+}
+DEFAULT_RELATIVE = 1e-8
+IGNORED = {"CPU", "Cpu", "cpu", "CPULeft"}  # timings
+
+CASES = {
+    "single_grain": {
+        "deck": os.path.join(ROOT, "examples", "single_grain", "in.single_grain"),
+        "vars": {},
+        "dump": "fragments.dump",
+    },
+    "compression": {
+        "deck": os.path.join(HERE, "crush", "in.compression"),
+        "vars": {"log": "events.csv", "out": "final.dump"},
+        "dump": "final.dump",
+    },
+    "contact_assembly": {
+        "deck": os.path.join(HERE, "contact", "in.assembly"),
+        "vars": {"model": "hertz/scaled", "tmodel": "mindlin/scaled", "mu": 0.5,
+                 "out": "final.dump", "contacts": "contacts.dump"},
+        "dump": "final.dump",
+    },
+}
+
+
+def tolerance(column):
+    return TOLERANCES.get(column, DEFAULT_RELATIVE)
