@@ -250,6 +250,29 @@ def case_fontainebleau_short(liggghts, work, deck="in.oedometer"):
           and passing[0] > 0.0, "gsd_%s2_1MPa.csv: 11 sieves, non-decreasing to 100%%, fines below 0.01 mm" % test)
 
 
+def case_hard(liggghts, work, which):
+    """Hard cases (in.hard_cases): the run ends normally, every thermo row keeps the books
+    (particles = 512 + 13 x events, particle + removed volume = initial to 1e-12), no NaN, and the
+    largest speed stays below 50 m/s (the squeeze moves the boundaries at under 7 m/s)."""
+    run_deck(liggghts, os.path.join(CRUSH, "in.hard_cases"), work, {"case": which, "out": "final.dump"})
+    thermo = read_thermo(os.path.join(work, "log.liggghts"))
+    v0 = thermo[0]["gsd"]
+    for row in thermo:
+        values = list(row.values())
+        if any(v != v for v in values):
+            raise AssertionError("NaN at step %d" % row["Step"])
+        if row["Atoms"] != N0 + 13 * row["crush[1]"] or abs(row["gsd"] - v0) > 1e-12 * v0:
+            raise AssertionError("books broken at step %d: %s" % (row["Step"], row))
+        if row["vmax"] > 50.0:
+            raise AssertionError("speed %.3g m/s at step %d" % (row["vmax"], row["Step"]))
+    check(True, "%s: %d events, books balance and speeds stay below 50 m/s in all %d rows (largest %.3g m/s)"
+          % (which, thermo[-1]["crush[1]"], len(thermo), max(r["vmax"] for r in thermo)))
+    final = read_dump(os.path.join(work, "final.dump"))[-1][2]
+    check(all(all(v == v for v in r.values()) for r in final), "no NaN in the final particles")
+    if which == "all_break":
+        check(thermo[-1]["crush[1]"] == N0, "all 512 grains broke")
+
+
 def case_particle_lost(liggghts, work):
     """A particle that leaves the box (LIGGGHTS deletes it silently by default) stops the run."""
     deck_dir = os.path.join(work, "deck")
