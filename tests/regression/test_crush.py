@@ -251,17 +251,20 @@ def case_fontainebleau_short(liggghts, work, deck="in.oedometer"):
 
 
 def case_hard(liggghts, work, which):
-    """Hard cases (in.hard_cases): the run ends normally, every thermo row keeps the books
+    """Hard cases (in.hard_cases; 'corner': in.hard_corner): the run ends normally, every thermo row keeps the books
     (particles = 512 + 13 x events, particle + removed volume = initial to 1e-12), no NaN, and the
     largest speed stays below 50 m/s (the squeeze moves the boundaries at under 7 m/s)."""
-    run_deck(liggghts, os.path.join(CRUSH, "in.hard_cases"), work, {"case": which, "out": "final.dump"})
+    corner = which == "corner"
+    deck = os.path.join(CRUSH, "in.hard_corner" if corner else "in.hard_cases")
+    run_deck(liggghts, deck, work, {"case": which, "out": "final.dump"})
+    n0 = 1 if corner else N0
     thermo = read_thermo(os.path.join(work, "log.liggghts"))
     v0 = thermo[0]["gsd"]
     for row in thermo:
         values = list(row.values())
         if any(v != v for v in values):
             raise AssertionError("NaN at step %d" % row["Step"])
-        if row["Atoms"] != N0 + 13 * row["crush[1]"] or abs(row["gsd"] - v0) > 1e-12 * v0:
+        if row["Atoms"] != n0 + 13 * row["crush[1]"] or abs(row["gsd"] - v0) > 1e-12 * v0:
             raise AssertionError("books broken at step %d: %s" % (row["Step"], row))
         if row["vmax"] > 50.0:
             raise AssertionError("speed %.3g m/s at step %d" % (row["vmax"], row["Step"]))
@@ -271,6 +274,11 @@ def case_hard(liggghts, work, which):
     check(all(all(v == v for v in r.values()) for r in final), "no NaN in the final particles")
     if which == "all_break":
         check(thermo[-1]["crush[1]"] == N0, "all 512 grains broke")
+    if corner:
+        check(thermo[-1]["crush[1]"] == 1, "the grain in the corner broke")
+        inside = all(0 < r["x"] < 3e-4 and 0 < r["y"] < 3e-4 and 0 < r["z"] < 2e-4 for r in final)
+        check(inside, "its 14 fragments stay between the walls")
+        check(abs(thermo[-1]["walls[9]"] / 3e7 - 1) < 1e-3, "the top wall holds 30 MPa after the event")
 
 
 def case_particle_lost(liggghts, work):
