@@ -250,14 +250,15 @@ def case_fontainebleau_short(liggghts, work, deck="in.oedometer"):
           and passing[0] > 0.0, "gsd_%s2_1MPa.csv: 11 sieves, non-decreasing to 100%%, fines below 0.01 mm" % test)
 
 
-def case_hard(liggghts, work, which):
-    """Hard cases (in.hard_cases; 'corner': in.hard_corner): the run ends normally, every thermo row keeps the books
-    (particles = 512 + 13 x events, particle + removed volume = initial to 1e-12), no NaN, and the
-    largest speed stays below 50 m/s (100 m/s for the generations case)."""
+def case_hard(liggghts, work, which, ranks=1):
+    """Hard cases (in.hard_cases; corner, generations, periodic: in.hard_<case>): the run ends
+    normally, every thermo row keeps the books (particles = initial + 13 x events, particle + removed
+    volume = initial to 1e-12), no NaN, and the largest speed stays below 50 m/s (100 m/s for the
+    generations case)."""
     corner = which == "corner"
-    single = which in ("corner", "generations")
+    single = which in ("corner", "generations", "periodic")
     deck = os.path.join(CRUSH, "in.hard_" + which if single else "in.hard_cases")
-    run_deck(liggghts, deck, work, {"case": which, "out": "final.dump"})
+    run_deck(liggghts, deck, work, {"case": which, "out": "final.dump"}, ranks=int(ranks))
     n0 = 1 if single else N0
     # Tiny second-generation fragments released from a wall overlap under 20 MPa move fast.
     speed_bound = 100.0 if which == "generations" else 50.0
@@ -281,6 +282,9 @@ def case_hard(liggghts, work, which):
         check(thermo[-1]["crush[1]"] == 15, "the grain and its 14 fragments broke (15 events)")
         check(all(r["f_crush[2]"] == 2 and 2 * r["radius"] < 4e-5 for r in final),
               "196 second-generation fragments, all below dmin, at the largest allowed time step")
+    if which == "periodic":
+        check(thermo[-1]["crush[1]"] == 1 and sorted(int(r["id"]) for r in final) == list(range(2, 16)),
+              "on %s rank(s) the grain on the periodic corner broke into fragments 2..15" % ranks)
     if corner:
         check(thermo[-1]["crush[1]"] == 1, "the grain in the corner broke")
         inside = all(0 < r["x"] < 3e-4 and 0 < r["y"] < 3e-4 and 0 < r["z"] < 2e-4 for r in final)
