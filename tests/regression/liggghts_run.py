@@ -6,12 +6,13 @@ import shutil
 import subprocess
 
 
-def run_deck(liggghts, deck, workdir, variables=None, ranks=1, expect_fail=False):
-    """Runs `liggghts -in deck` in workdir (created afresh) with -var name value pairs; returns the
-    screen output. Decks may include files from their own folder: they are run from a copy of it."""
-    if os.path.isdir(workdir):
+def run_deck(liggghts, deck, workdir, variables=None, ranks=1, expect_fail=False, keep=False):
+    """Runs `liggghts -in deck` in workdir (created afresh, or kept with keep=True: to run a deck on
+    the outputs of another) with -var name value pairs; returns the screen output. Decks may include
+    files from their own folder: they are run from a copy of it."""
+    if os.path.isdir(workdir) and not keep:
         shutil.rmtree(workdir)
-    shutil.copytree(os.path.dirname(os.path.abspath(deck)), workdir)
+    shutil.copytree(os.path.dirname(os.path.abspath(deck)), workdir, dirs_exist_ok=True)
     cmd = [liggghts, "-in", os.path.basename(deck), "-log", "log.liggghts"]
     for name, value in (variables or {}).items():
         cmd += ["-var", name, str(value)]

@@ -27,6 +27,35 @@ CASES = {
         "vars": {"log": "events.csv", "out": "final.dump"},
         "dump": "final.dump",
     },
+    "restart_mid_crushing": {
+        "deck": os.path.join(HERE, "crush", "in.restart_first"),
+        "vars": {"log": "events.csv", "out": "final.dump"},
+        "dump": "final.dump",
+    },
+    # The second half of restart_mid_crushing from its restart file: the same final particles.
+    "restart_continued": {
+        "before": os.path.join(HERE, "crush", "in.restart_first"),
+        "deck": os.path.join(HERE, "crush", "in.restart_second"),
+        "vars": {"log": "events.csv", "out": "final.dump"},
+        "dump": "final.dump",
+        "reference": "restart_mid_crushing",
+        "thermo": False,
+    },
+    "fontainebleau_oedometer_short": {
+        "deck": os.path.join(ROOT, "examples", "fontainebleau", "in.oedometer"),
+        "vars": {"sigma_max": 1e6},
+        "dump": None,
+    },
+    "contact_wall_servo": {
+        "deck": os.path.join(HERE, "contact", "in.servo"),
+        "vars": {},
+        "dump": None,
+    },
+    "contact_oblique_wall": {
+        "deck": os.path.join(HERE, "contact", "in.oblique"),
+        "vars": {"out": "oblique.dump"},
+        "dump": "oblique.dump",
+    },
     "contact_assembly": {
         "deck": os.path.join(HERE, "contact", "in.assembly"),
         "vars": {"model": "hertz/scaled", "tmodel": "mindlin/scaled", "mu": 0.5,
