@@ -50,6 +50,7 @@ FixCrush::FixCrush(LAMMPS *lmp, int narg, char **arg) :
   Fix(lmp, narg, arg),
   settings_(parse(error, narg, arg)),
   strength_(settings_.distribution, settings_.sigma_lim0, settings_.cv, settings_.weibull_m, settings_.seed),
+  nfrag_(static_cast<int>(crush::fragment_layout(settings_.layout, 1.0).size())),
   fix_data_(NULL), data_id_(NULL), inv_limit_factor_(NULL), irregular_(NULL), log_(NULL),
   events_total_(0.0), removed_volume_(0.0), max_ratio_(0.0), smallest_fragment_diameter_(0.0),
   initial_largest_diameter_(0.0), next_tag_(0.0), replace_seconds_(0.0), particle_count_(0.0), initialized_(false)
@@ -85,8 +86,7 @@ FixCrush::FixCrush(LAMMPS *lmp, int narg, char **arg) :
       error->one(FLERR, msg.c_str());
     }
     fprintf(log_, "step,tag,diameter,generation,force_ratio,x,y,z");
-    const int nfrag = static_cast<int>(crush::fragment_layout(settings_.layout, 1.0).size());
-    for (int f = 1; f <= nfrag; f++) fprintf(log_, ",fragment_%d", f);
+    for (int f = 1; f <= nfrag_; f++) fprintf(log_, ",fragment_%d", f);
     fprintf(log_, "\n");
   }
 }
@@ -283,38 +283,30 @@ void FixCrush::pre_exchange()
 
 void FixCrush::replace_mothers()
 {
-  const int nfrag = static_cast<int>(crush::fragment_layout(settings_.layout, 1.0).size());
   // New tags follow every tag in use (and every tag ever given), in the agreed event order.
   int maxtag = 0, maxtag_all = 0;
   for (int i = 0; i < atom->nlocal; i++) maxtag = std::max(maxtag, atom->tag[i]);
   MPI_Allreduce(&maxtag, &maxtag_all, 1, MPI_INT, MPI_MAX, world);
   const double first = std::max(static_cast<double>(maxtag_all) + 1.0, next_tag_);
-  if (first + static_cast<double>(nfrag) * pending_.size() > 2147483647.0)
+  if (first + static_cast<double>(nfrag_) * pending_.size() > 2147483647.0)
     error->all(FLERR, "fix crush: particle tags would exceed the largest 32-bit integer");
   log_events(pending_, static_cast<int>(first));
 
-  const double volume_before = [&] {
-    double v = 0.0;
-    for (int i = 0; i < atom->nlocal; i++) v += crush::sphere_volume(2.0 * atom->radius[i]);
-    return v;
-  }();
   std::vector<int> mothers;
-  double smallest = 0.0;
+  double removed_local = 0.0, smallest = 0.0;
   for (std::size_t k = 0; k < pending_.size(); k++) {
     const int i = atom->map(static_cast<int>(pending_[k].tag));
     if (i < 0 || i >= atom->nlocal) continue;  // owned by another processor
     mothers.push_back(i);
-    create_fragments(i, static_cast<int>(first) + nfrag * static_cast<int>(k),
-                     static_cast<int>(pending_[k].generation) + 1);
-    const double d = 2.0 * crush::smallest_fragment_ratio(settings_.layout) * pending_[k].diameter / 2.0;
+    removed_local += create_fragments(i, static_cast<int>(first) + nfrag_ * static_cast<int>(k),
+                                      static_cast<int>(pending_[k].generation) + 1);
+    const double d = crush::smallest_fragment_ratio(settings_.layout) * pending_[k].diameter;
     smallest = smallest == 0.0 ? d : std::min(smallest, d);
   }
   delete_mothers(mothers);
-  double volume_after = 0.0;
-  for (int i = 0; i < atom->nlocal; i++) volume_after += crush::sphere_volume(2.0 * atom->radius[i]);
 
   // Books: the volume that left the particles is the removed volume, nothing else.
-  double removed_local = volume_before - volume_after, removed = 0.0;
+  double removed = 0.0;
   MPI_Allreduce(&removed_local, &removed, 1, MPI_DOUBLE, MPI_SUM, world);
   removed_volume_ += removed;
   double smallest_all = 0.0, big = smallest > 0.0 ? smallest : 1e300;
@@ -323,9 +315,9 @@ void FixCrush::replace_mothers()
     smallest_fragment_diameter_ = smallest_fragment_diameter_ == 0.0 ? smallest_all
                                                                     : std::min(smallest_fragment_diameter_, smallest_all);
   events_total_ += pending_.size();
-  particle_count_ += static_cast<double>(nfrag - 1) * pending_.size();
-  next_tag_ = first + static_cast<double>(nfrag) * pending_.size();
-  atom->natoms += static_cast<bigint>(nfrag - 1) * static_cast<bigint>(pending_.size());
+  particle_count_ += static_cast<double>(nfrag_ - 1) * pending_.size();
+  next_tag_ = first + static_cast<double>(nfrag_) * pending_.size();
+  atom->natoms += static_cast<bigint>(nfrag_ - 1) * static_cast<bigint>(pending_.size());
 
   atom->nghost = 0;
   atom->map_init();
@@ -335,15 +327,11 @@ void FixCrush::replace_mothers()
   domain->reset_box();
   if (irregular_->migrate_check()) irregular_->migrate_atoms();
 
-  if (settings_.dmin <= 0.0) {
-    double rmin = 1e300, rmin_all = 0.0;
-    for (int i = 0; i < atom->nlocal; i++) rmin = std::min(rmin, atom->radius[i]);
-    MPI_Allreduce(&rmin, &rmin_all, 1, MPI_DOUBLE, MPI_MIN, world);
-    check_time_step(rmin_all);
-  }
+  if (settings_.dmin <= 0.0) check_time_step(smallest_radius());
 }
 
-void FixCrush::create_fragments(int mother, int first_tag, int generation)
+// Appends the mother's fragments (the mother is deleted afterwards) and returns the volume they leave out (m^3).
+double FixCrush::create_fragments(int mother, int first_tag, int generation)
 {
   // Copy the mother: creating atoms may reallocate every per-atom array.
   const int type = atom->type[mother], mask = atom->mask[mother], tag = atom->tag[mother];
@@ -356,6 +344,7 @@ void FixCrush::create_fragments(int mother, int first_tag, int generation)
     wm[k] = atom->omega[mother][k];
   }
   std::vector<crush::Fragment> fragments = crush::fragment_layout(settings_.layout, R);
+  double removed = crush::sphere_volume(2.0 * R);
   if (settings_.random_orientation)
     fragments = crush::rotated(fragments, crush::random_rotation(settings_.seed, static_cast<std::uint64_t>(tag)));
 
@@ -370,7 +359,9 @@ void FixCrush::create_fragments(int mother, int first_tag, int generation)
     atom->image[n] = image;
     atom->radius[n] = r;
     atom->density[n] = density;
-    atom->rmass[n] = density * crush::sphere_volume(2.0 * r);
+    const double volume = crush::sphere_volume(2.0 * r);
+    removed -= volume;
+    atom->rmass[n] = density * volume;
     for (int k = 0; k < 3; k++) {
       atom->v[n][k] = vm[k];
       atom->omega[n][k] = wm[k];
@@ -382,6 +373,7 @@ void FixCrush::create_fragments(int mother, int first_tag, int generation)
     data[GENERATION] = generation;
     data[RATIO] = 0.0;
   }
+  return removed;
 }
 
 // Deletes from the highest index down, so that no pending index is moved before it is deleted.
@@ -397,12 +389,11 @@ void FixCrush::delete_mothers(std::vector<int> &mothers)
 void FixCrush::log_events(const std::vector<Event> &events, int first_new_tag)
 {
   if (!log_) return;
-  const int nfrag = static_cast<int>(crush::fragment_layout(settings_.layout, 1.0).size());
   for (std::size_t k = 0; k < events.size(); k++) {
     const Event &e = events[k];
     fprintf(log_, BIGINT_FORMAT ",%.0f,%.10g,%.0f,%.10g,%.10g,%.10g,%.10g", update->ntimestep - 1, e.tag,
             e.diameter, e.generation, e.ratio, e.x[0], e.x[1], e.x[2]);
-    for (int f = 0; f < nfrag; f++) fprintf(log_, ",%d", first_new_tag + nfrag * static_cast<int>(k) + f);
+    for (int f = 0; f < nfrag_; f++) fprintf(log_, ",%d", first_new_tag + nfrag_ * static_cast<int>(k) + f);
     fprintf(log_, "\n");
   }
   fflush(log_);
@@ -412,10 +403,16 @@ void FixCrush::log_events(const std::vector<Event> &events, int first_new_tag)
 // particle already present.
 double FixCrush::smallest_possible_radius() const
 {
+  return std::min(smallest_radius(), crush::smallest_fragment_ratio(settings_.layout) * 0.5 * settings_.dmin);
+}
+
+// The smallest particle radius on all processors (1e300 without particles).
+double FixCrush::smallest_radius() const
+{
   double rmin = 1e300, rmin_all = 0.0;
   for (int i = 0; i < atom->nlocal; i++) rmin = std::min(rmin, atom->radius[i]);
   MPI_Allreduce(&rmin, &rmin_all, 1, MPI_DOUBLE, MPI_MIN, world);
-  return std::min(rmin_all, crush::smallest_fragment_ratio(settings_.layout) * 0.5 * settings_.dmin);
+  return rmin_all;
 }
 
 void FixCrush::check_time_step(double smallest_radius) const

@@ -61,14 +61,16 @@ class FixCrush : public Fix {
   void draw_missing_strengths();
   void check_time_step(double smallest_radius) const;
   double smallest_possible_radius() const;
+  double smallest_radius() const;
   std::vector<Event> gather_events(const std::vector<int> &local_mothers);
   void log_events(const std::vector<Event> &events, int first_new_tag);
   void replace_mothers();
-  void create_fragments(int mother, int first_tag, int generation);
+  double create_fragments(int mother, int first_tag, int generation);
   void delete_mothers(std::vector<int> &mothers);
 
   crush::CrushSettings settings_;
   crush::StrengthDraw strength_;
+  const int nfrag_;                  // fragments per event (layout)
   class FixPropertyAtom *fix_data_;  // per atom: sigma_lim (Pa), generation, last F_n/F_lim
   char *data_id_;
   CrushRecorder recorder_;
