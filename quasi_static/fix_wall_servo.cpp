@@ -36,7 +36,8 @@ void expect(Error *error, bool ok, const std::string &message)
 
 FixWallServo::FixWallServo(LAMMPS *lmp, int narg, char **arg) :
   Fix(lmp, narg, arg), wall_type_(0), sigma_start_(1e3), sigma_max_(0.0), load_rate_(0.0), sigma_ref_(1e3),
-  target_(0.0), alpha_(0.5), max_step_(0.0), normal_coeff_(NULL), ramp_started_(false), monitor_(lmp)
+  target_(0.0), alpha_(0.5), max_step_(0.0), normal_coeff_(NULL), progress_percent_(0.0), ramp_done_(0.0),
+  next_report_(0.0), ramp_wall_start_(0.0), ramp_started_steps_(0.0), ramp_started_(false), monitor_(lmp)
 {
   expect(error, narg >= 9, "expected 'fix ID group wall/servo xlo xhi ylo yhi zlo zhi type T x MODE y MODE z MODE'");
   for (int k = 0; k < 6; k++) wall_[k] = force->numeric(FLERR, arg[3 + k]);
@@ -46,6 +47,7 @@ FixWallServo::FixWallServo(LAMMPS *lmp, int narg, char **arg) :
     mode_[a] = FIXED;
     value_[a] = 0.0;
     force_[2 * a] = force_[2 * a + 1] = 0.0;
+    last_move_[a] = 0.0;
   }
   int iarg = 9;
   while (iarg < narg) {
@@ -81,8 +83,14 @@ FixWallServo::FixWallServo(LAMMPS *lmp, int narg, char **arg) :
       max_step_ = force->numeric(FLERR, arg[iarg + 1]);
       expect(error, max_step_ > 0.0, "keyword 'max_step' expects a length > 0 (m)");
       iarg += 2;
+    } else if (key == "progress") {
+      expect(error, iarg + 1 < narg, "keyword 'progress' expects a percentage in (0, 100]");
+      progress_percent_ = force->numeric(FLERR, arg[iarg + 1]);
+      expect(error, progress_percent_ > 0.0 && progress_percent_ <= 100.0,
+             "keyword 'progress' expects a percentage in (0, 100]");
+      iarg += 2;
     } else {
-      expect(error, false, "unknown keyword '" + key + "' (expected type, x, y, z, ramp, alpha or max_step)");
+      expect(error, false, "unknown keyword '" + key + "' (expected type, x, y, z, ramp, alpha, max_step or progress)");
     }
   }
   expect(error, wall_type_ > 0, "keyword 'type' (the walls' atom type, for their material) is required");
@@ -93,7 +101,7 @@ FixWallServo::FixWallServo(LAMMPS *lmp, int narg, char **arg) :
   ramp_steps_ = load_rate_ > 0.0 ? crush::LoadRamp(load_rate_, sigma_ref_).steps_to_reach(sigma_start_, sigma_max_) : 0;
 
   vector_flag = 1;
-  size_vector = 12;
+  size_vector = 18;
   global_freq = 1;
   extvector = 0;
   restart_global = 1;
@@ -162,8 +170,12 @@ void FixWallServo::post_force(int)
 {
   double force[6], stiffness[3];
   apply_contacts(force, stiffness);
-  for (int k = 0; k < 6; k++) force_[k] = force[k];
-  move_walls(force, stiffness);
+  double force_before[6];
+  for (int k = 0; k < 6; k++) {
+    force_before[k] = force_[k];
+    force_[k] = force[k];
+  }
+  move_walls(force, force_before, stiffness);
 }
 
 // Hertz contacts of the local particles with the six walls: adds the forces, returns the total
@@ -198,12 +210,38 @@ void FixWallServo::apply_contacts(double *force, double *stiffness)
   for (int a = 0; a < 3; a++) stiffness[a] = all[6 + a];
 }
 
+void FixWallServo::add_contact_stiffness(std::vector<crush::ContactStiffness> &stiffness) const
+{
+  double **x = atom->x;
+  const double *radius = atom->radius;
+  const int *mask = atom->mask, *type = atom->type;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(mask[i] & groupbit)) continue;
+    for (int a = 0; a < 3; a++) {
+      const double U_lo = radius[i] - (x[i][a] - wall_[2 * a]), U_hi = radius[i] - (wall_[2 * a + 1] - x[i][a]);
+      for (double U : {U_lo, U_hi})
+        if (U > 0.0) stiffness[i].translational += 1.5 * normal_coeff_[type[i]][0] * std::sqrt(2.0 * radius[i] * U);
+    }
+  }
+}
+
 // Every processor makes the same move from the same reduced numbers.
-void FixWallServo::move_walls(const double *force, const double *stiffness)
+void FixWallServo::move_walls(const double *force, const double *force_before, const double *stiffness)
 {
   const double before = target_;
   if (load_rate_ > 0.0 && target_ < sigma_max_) {
     target_ = std::min(sigma_max_, crush::LoadRamp(load_rate_, sigma_ref_).next(target_));
+    if (!ramp_started_) {
+      ramp_started_ = true;
+      ramp_wall_start_ = MPI_Wtime();
+      ramp_started_steps_ = ramp_done_;
+      next_report_ = ramp_done_ + progress_percent_ * 0.01 * ramp_steps_;
+    }
+    ramp_done_ += 1.0;
+    if (progress_percent_ > 0.0 && (ramp_done_ >= next_report_ || target_ >= sigma_max_)) {
+      report_progress();
+      next_report_ += progress_percent_ * 0.01 * ramp_steps_;
+    }
   }
   for (int a = 0; a < 3; a++) {
     double &hi = wall_[2 * a + 1];
@@ -211,10 +249,46 @@ void FixWallServo::move_walls(const double *force, const double *stiffness)
       hi += value_[a] * update->dt;
     } else if (mode_[a] == RAMP || mode_[a] == STRESS) {
       const double sigma = mode_[a] == RAMP ? target_ : value_[a];
-      const double increment = mode_[a] == RAMP ? (target_ - before) * area(a) : 0.0;
-      hi -= crush::servo_step(force[2 * a + 1], sigma * area(a), stiffness[a], alpha_, max_step_, increment);
+      double increment = 0.0, sample_stiffness = 0.0;
+      if (mode_[a] == RAMP) {
+        increment = (target_ - before) * area(a);
+        sample_stiffness_[a].add(force[2 * a + 1] - force_before[2 * a + 1], last_move_[a]);
+        sample_stiffness = sample_stiffness_[a].value(stiffness[a]);
+      }
+      last_move_[a] = crush::servo_step(force[2 * a + 1], sigma * area(a), stiffness[a], alpha_, max_step_,
+                                        increment, sample_stiffness);
+      // A constant stress on a dilating or creeping sample: the wall's average motion, fed forward.
+      // Only while the wall has contacts (an approach at max_step is not a drift), within max_step.
+      if (mode_[a] == STRESS && stiffness[a] > 0.0) {
+        last_move_[a] = std::max(-max_step_, std::min(max_step_, last_move_[a] + drift_[a].value()));
+        drift_[a].add(last_move_[a]);
+      } else if (mode_[a] == STRESS) {
+        drift_[a] = crush::DriftEstimate();
+      }
+      hi -= last_move_[a];
     }
   }
+}
+
+// One line: ramp stage, target and measured stresses, particles, crushing events (of a fix crush, if
+// any) and the wall-clock time left, extrapolated from this run's rate so far.
+void FixWallServo::report_progress()
+{
+  if (comm->me != 0) return;
+  const double done = ramp_done_ / std::max(1.0, ramp_steps_);
+  const double elapsed = MPI_Wtime() - ramp_wall_start_;
+  const double left = elapsed * std::max(0.0, ramp_steps_ - ramp_done_) / std::max(1.0, ramp_done_ - ramp_started_steps_);
+  Fix *crush = modify->find_fix_style_strict("crush", 0);
+  char events[64] = "";
+  if (crush) snprintf(events, sizeof(events), ", %.0f events", crush->compute_vector(0));
+  char line[512];
+  snprintf(line, sizeof(line),
+           "wall/servo: ramp %5.1f%%  target %.4g MPa  sigma x y z %.4g %.4g %.4g MPa  %.0f particles%s  "
+           "elapsed %.0f s  left %.0f s\n",
+           100.0 * done, target_ * 1e-6, stress(0) * 1e-6, stress(1) * 1e-6, stress(2) * 1e-6,
+           static_cast<double>(atom->natoms), events, elapsed, left);
+  if (screen) fputs(line, screen);
+  if (logfile) fputs(line, logfile);
 }
 
 double FixWallServo::area(int axis) const
@@ -230,9 +304,10 @@ double FixWallServo::stress(int axis) const
 }
 
 // [1-6] wall positions, [7-9] stresses sigma_x, sigma_y, sigma_z, [10] ramp target, [11] volume,
-// [12] steps of the whole ramp (eq. 11) from sigma_start to sigma_max.
+// [12] steps of the whole ramp (eq. 11) from sigma_start to sigma_max, [13-18] the stress on each wall.
 double FixWallServo::compute_vector(int n)
 {
+  if (n >= 12) return force_[n - 12] / area((n - 12) / 2);
   if (n < 6) return wall_[n];
   if (n < 9) return stress(n - 6);
   if (n == 9) return target_;
@@ -255,4 +330,6 @@ void FixWallServo::restart(char *buf)
   const double *list = reinterpret_cast<const double *>(buf);
   for (int k = 0; k < 6; k++) wall_[k] = list[k];
   target_ = list[6];
+  if (load_rate_ > 0.0)
+    ramp_done_ = static_cast<double>(crush::LoadRamp(load_rate_, sigma_ref_).steps_to_reach(sigma_start_, target_));
 }

@@ -7,6 +7,7 @@
      MODE = fixed | ramp | stress S | velocity V
      ramp sigma_start sigma_max load_rate [sigma_ref]    (eq. 11, natural log, default 1 kPa)
      alpha a (servo relaxation, default 0.5)   max_step d (m per step, default 1e-3 r_min)
+     progress P (a line on the screen every P percent of the ramp's steps, with the time left)
 
    Contacts: the hertz/scaled normal law (eq. 8) with the wall type's material, no friction (smooth
    walls); they feed a fix crush like pair contacts. The hi wall of a controlled axis moves; the lo
@@ -22,6 +23,10 @@ FixStyle(wall/servo,FixWallServo)
 #ifndef LMP_FIX_WALL_SERVO_H
 #define LMP_FIX_WALL_SERVO_H
 
+#include <vector>
+
+#include "critical_step_law.h"
+#include "servo_wall_law.h"
 #include "fix.h"
 #include "fix_crush_monitor.h"
 
@@ -38,15 +43,19 @@ class FixWallServo : public Fix {
   double compute_vector(int);
   void write_restart(FILE *);
   void restart(char *);
+  // Adds the tangent stiffness of each local particle's wall contacts (smooth: normal only), for
+  // fix dt/stiffness.
+  void add_contact_stiffness(std::vector<crush::ContactStiffness> &stiffness) const;
 
  private:
   enum Mode { FIXED, RAMP, STRESS, VELOCITY };
 
   void parse_mode(int axis, int narg, char **arg, int &iarg);
   void apply_contacts(double *force, double *stiffness);
-  void move_walls(const double *force, const double *stiffness);
+  void move_walls(const double *force, const double *force_before, const double *stiffness);
   double area(int axis) const;
   double stress(int axis) const;
+  void report_progress();
 
   double wall_[6];        // positions (m): xlo xhi ylo yhi zlo zhi
   Mode mode_[3];
@@ -56,7 +65,15 @@ class FixWallServo : public Fix {
   double ramp_steps_;
   double alpha_, max_step_;
   double force_[6];       // compressive force on each wall (N), last step
+  crush::StiffnessEstimate sample_stiffness_[3];  // dF/dx of each ramp axis' hi wall
+  crush::DriftEstimate drift_[3];                 // average step of each stress axis' hi wall
+  double last_move_[3];   // the hi wall's last displacement towards the sample (m)
   double **normal_coeff_; // per particle type: eq. 8 factor against the wall type
+  double progress_percent_;  // 0: no progress lines
+  double ramp_done_;         // ramp steps taken
+  double next_report_;       // ramp steps at the next progress line
+  double ramp_wall_start_;   // MPI_Wtime() at the first ramp step of this run
+  double ramp_started_steps_;  // ramp steps taken before it (a restarted run)
   bool ramp_started_;
   CrushMonitor monitor_;
 };

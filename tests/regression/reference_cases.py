@@ -43,7 +43,12 @@ CASES = {
     },
     "fontainebleau_oedometer_short": {
         "deck": os.path.join(ROOT, "examples", "fontainebleau", "in.oedometer"),
-        "vars": {"sigma_max": 1e6},
+        "vars": {"sigma_max": 3e6},
+        "dump": None,
+    },
+    "fontainebleau_isotropic_short": {
+        "deck": os.path.join(ROOT, "examples", "fontainebleau", "in.isotropic"),
+        "vars": {"sigma_max": 3e6},
         "dump": None,
     },
     "contact_wall_servo": {

@@ -228,33 +228,6 @@ def case_bad_input(liggghts, work):
         check(expected.lower() in out.lower(), "%s -> error mentions '%s'" % (label, expected))
 
 
-def case_fontainebleau_short(liggghts, work, deck="in.oedometer"):
-    """The Fontainebleau decks (work in progress) at N = 2 up to 1 MPa: they run, crush, keep the
-    books, and write the history CSV with its named columns."""
-    path = os.path.join(ROOT, "examples", "fontainebleau", deck)
-    run_deck(liggghts, path, work, {"sigma_max": 1e6})
-    test = "O" if "oedometer" in deck else "I"
-    with open(os.path.join(work, "history_%s2.csv" % test)) as f:
-        header = f.readline().strip().split(",")
-        rows = [dict(zip(header, map(float, line.split(",")))) for line in f if line.strip()]
-    check(header[:5] == ["step", "time", "sigma_x", "sigma_y", "sigma_z"] and "I_G" in header,
-          "history columns: " + ",".join(header))
-    first, last = rows[0], rows[-1]
-    initial = first["particles"] - 13 * first["events"]
-    check(1200 < initial < 1300, "about 1250 particles at N = 2 (%d)" % initial)
-    check(all(r["particles"] == initial + 13 * r["events"] for r in rows), "particles = initial + 13 x events in every row")
-    check(0.38 < first["porosity"] < 0.40 and last["porosity"] < first["porosity"],
-          "porosity %.4f -> %.4f (removed volume counted as solid)" % (first["porosity"], last["porosity"]))
-    check(last["sigma_target"] > 4e5 and all(a["sigma_target"] < b["sigma_target"] for a, b in zip(rows, rows[1:])),
-          "the ramp target rises (%.3g Pa at the last row)" % last["sigma_target"])
-    check(0.6 < first["I_G"] < 0.75, "initial I_G %.3f (paper 0.735)" % first["I_G"])
-    with open(os.path.join(work, "gsd_%s2_1MPa.csv" % test)) as f:
-        gsd = [tuple(map(float, line.split(","))) for line in f.read().splitlines()[1:]]
-    passing = [p for _, p in gsd]
-    check(len(gsd) == 11 and all(a <= b for a, b in zip(passing, passing[1:])) and passing[-1] == 100.0
-          and passing[0] > 0.0, "gsd_%s2_1MPa.csv: 11 sieves, non-decreasing to 100%%, fines below 0.01 mm" % test)
-
-
 def case_hard(liggghts, work, which, ranks=1):
     """Hard cases (in.hard_cases; corner, generations, periodic: in.hard_<case>): the run ends
     normally, every thermo row keeps the books (particles = initial + 13 x events, particle + removed

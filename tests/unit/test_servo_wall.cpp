@@ -56,3 +56,61 @@ TEST(ServoWall, FeedForwardRemovesTheLagBehindARamp)
   EXPECT_NEAR(track(false), -rate / alpha, 0.2 * rate / alpha);  // about -2%
   EXPECT_LT(std::fabs(track(true)), 1e-3);
 }
+
+TEST(ServoWall, SampleStiffnessFeedForwardFollowsARampOnASoftSample)
+{
+  // The wall's contacts (stiffness kw) rest on a sample 20 times softer: quasi-statically the wall
+  // force is K x. Fed forward with kw the wall lags by dF (kw/K - 1)/alpha (about 19 increments /
+  // alpha); with the estimated sample stiffness the lag vanishes.
+  const double kw = 2e7, K = 1e6, alpha = 0.5, rate = 1e-3;
+  auto track = [&](bool estimate) {
+    double x = 1e-6, target = K * x;
+    crush::StiffnessEstimate sample;
+    double last_force = K * x, last_move = 0.0;
+    for (int step = 0; step < 3000; ++step) {
+      const double increment = rate * target;
+      target += increment;
+      const double F = K * x;
+      sample.add(F - last_force, last_move);
+      last_force = F;
+      last_move = servo_step(F, target, kw, alpha, 1.0, increment, estimate ? sample.value(kw) : kw);
+      x += last_move;
+    }
+    return K * x / target - 1.0;
+  };
+  EXPECT_NEAR(track(false), -rate * (kw / K - 1.0) / alpha, 0.1 * rate * (kw / K) / alpha);  // about -4%
+  EXPECT_LT(std::fabs(track(true)), 1e-3);
+}
+
+TEST(ServoWall, StiffnessEstimateIsBounded)
+{
+  crush::StiffnessEstimate k(0.5);
+  EXPECT_DOUBLE_EQ(k.value(1e7), 1e7);  // no history yet
+  for (int n = 0; n < 50; ++n) k.add(2.0, 1e-6);
+  EXPECT_NEAR(k.value(1e7), 2e6, 1.0);
+  for (int n = 0; n < 50; ++n) k.add(1.0, 1e-3);
+  EXPECT_DOUBLE_EQ(k.value(1e7), 1e4);  // floor: 1e-3 kw
+  for (int n = 0; n < 50; ++n) k.add(-1.0, 1e-6);
+  EXPECT_DOUBLE_EQ(k.value(1e7), 1e7);  // force falling as the wall advances: back to kw
+}
+
+TEST(ServoWall, DriftRemovesTheLagOnADilatingSample)
+{
+  // Constant target on a linear sample whose unloaded surface recedes by v per step (dilation): the
+  // proportional servo lags by v kw / alpha, the drift term (PI) removes the lag.
+  const double kw = 1e6, alpha = 0.5, v = 1e-9, target = 1.0;
+  auto track = [&](bool drift) {
+    double x = target / kw, surface = 0.0, F = target;
+    crush::DriftEstimate average;
+    for (int step = 0; step < 5000; ++step) {
+      surface += v;
+      F = kw * (x - surface);  // the force the servo sees
+      double dx = servo_step(F, target, kw, alpha, 1.0) + (drift ? average.value() : 0.0);
+      average.add(dx);
+      x += dx;
+    }
+    return F / target - 1.0;
+  };
+  EXPECT_NEAR(track(false), -v * kw / alpha / target, 1e-6);  // -0.2%
+  EXPECT_LT(std::fabs(track(true)), 1e-6);
+}

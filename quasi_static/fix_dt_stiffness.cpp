@@ -1,0 +1,152 @@
+/* ----------------------------------------------------------------------
+   liggghts-crush: fix dt/stiffness (see fix_dt_stiffness.h).
+------------------------------------------------------------------------- */
+#include "fix_dt_stiffness.h"
+
+#include <cmath>
+#include <cstring>
+#include <string>
+
+#include "atom.h"
+#include "crush_model_error.h"
+#include "error.h"
+#include "fix_crush_materials.h"
+#include "fix_wall_servo.h"
+#include "force.h"
+#include "modify.h"
+#include "neigh_list.h"
+#include "pair.h"
+#include "update.h"
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+
+namespace {
+void expect(Error *error, bool ok, const std::string &message)
+{
+  if (!ok) error->all(FLERR, ("fix dt/stiffness: " + message).c_str());
+}
+}  // namespace
+
+FixDtStiffness::FixDtStiffness(LAMMPS *lmp, int narg, char **arg) :
+  Fix(lmp, narg, arg), fraction_(-1.0), growth_(1.01), dt_max_(1e300)
+{
+  for (int iarg = 3; iarg < narg; iarg += 2) {
+    const std::string key = arg[iarg];
+    const bool has_value = iarg + 1 < narg;
+    const double value = has_value ? force->numeric(FLERR, arg[iarg + 1]) : 0.0;
+    if (key == "fraction") {
+      expect(error, has_value && value > 0.0 && value <= 1.0, "keyword 'fraction' expects a value in (0, 1]");
+      fraction_ = value;
+    } else if (key == "every") {
+      expect(error, has_value && value >= 1.0, "keyword 'every' expects a number of steps >= 1");
+      nevery = static_cast<int>(value);
+    } else if (key == "growth") {
+      expect(error, has_value && value > 1.0, "keyword 'growth' expects a factor > 1");
+      growth_ = value;
+    } else if (key == "max") {
+      expect(error, has_value && value > 0.0, "keyword 'max' expects a time step > 0 (s)");
+      dt_max_ = value;
+    } else {
+      expect(error, false, "unknown keyword '" + key + "' (expected fraction, every, growth or max)");
+    }
+  }
+  expect(error, fraction_ > 0.0, "keyword 'fraction' is required (a value in (0, 1], 0.5 is safe)");
+  expect(error, atom->radius_flag && atom->rmass_flag, "needs atom_style granular (radius and mass)");
+  scalar_flag = 1;
+  global_freq = 1;
+  extscalar = 0;
+}
+
+int FixDtStiffness::setmask()
+{
+  return END_OF_STEP;
+}
+
+// eq. 8-9 factors of every type pair, from the types' elastic constants.
+void FixDtStiffness::init()
+{
+  expect(error, force->pair && strncmp(force->pair_style, "gran", 4) == 0, "needs pair_style gran");
+  const int ntypes = atom->ntypes;
+  coefficients_.assign((ntypes + 1) * (ntypes + 1), crush::HertzMindlinCoefficients{0.0, 0.0});
+  try {
+    for (int a = 1; a <= ntypes; a++)
+      for (int b = 1; b <= ntypes; b++)
+        coefficients_[a * (ntypes + 1) + b] = crush::hertz_mindlin_coefficients(
+            type_shear_material(modify, ntypes, a, style), type_shear_material(modify, ntypes, b, style));
+  } catch (const crush::ModelError &e) {
+    error->all(FLERR, (std::string("fix dt/stiffness: youngsModulus/poissonsRatio: ") + e.what()).c_str());
+  }
+}
+
+void FixDtStiffness::setup(int)
+{
+  update_time_step();
+}
+
+void FixDtStiffness::end_of_step()
+{
+  update_time_step();
+}
+
+void FixDtStiffness::update_time_step()
+{
+  const int nlocal = atom->nlocal;
+  stiffness_.assign(nlocal, crush::ContactStiffness());
+  add_pair_contacts();
+  for (int i = 0; i < modify->nfix; i++)
+    if (strcmp(modify->fix[i]->style, "wall/servo") == 0)
+      static_cast<FixWallServo *>(modify->fix[i])->add_contact_stiffness(stiffness_);
+  double smallest = 1e300;
+  for (int i = 0; i < nlocal; i++)
+    if (atom->mask[i] & groupbit) smallest = std::min(smallest, crush::critical_step(atom->rmass[i], stiffness_[i]));
+  double smallest_all = 1e300;
+  MPI_Allreduce(&smallest, &smallest_all, 1, MPI_DOUBLE, MPI_MIN, world);
+  // Without any contact the step stays: nothing says how stiff the first contact will be.
+  if (smallest_all < 1e300)
+    set_time_step(crush::next_time_step(update->dt, smallest_all, fraction_, growth_, dt_max_));
+}
+
+// Every overlapping pair of the pair style's half list (newton off: a pair with a ghost is listed on
+// both processors, each adds it to its own particle).
+void FixDtStiffness::add_pair_contacts()
+{
+  NeighList *list = force->pair->list;
+  if (!list) return;
+  double **x = atom->x;
+  const double *radius = atom->radius;
+  const int *type = atom->type;
+  const int nlocal = atom->nlocal, stride = atom->ntypes + 1;
+  for (int ii = 0; ii < list->inum; ii++) {
+    const int i = list->ilist[ii];
+    const int *jlist = list->firstneigh[i];
+    for (int jj = 0; jj < list->numneigh[i]; jj++) {
+      const int j = jlist[jj] & NEIGHMASK;
+      const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
+      const double reach = radius[i] + radius[j];
+      const double distance_sq = dx * dx + dy * dy + dz * dz;
+      if (distance_sq >= reach * reach) continue;
+      const double overlap = reach - std::sqrt(distance_sq);
+      const double dt_term = crush::diameter_term_from_radii(radius[i], radius[j]);
+      const crush::HertzMindlinCoefficients &c = coefficients_[type[i] * stride + type[j]];
+      if (i < nlocal) crush::add_contact(stiffness_[i], c, dt_term, overlap);
+      if (j < nlocal) crush::add_contact(stiffness_[j], c, dt_term, overlap);
+    }
+  }
+}
+
+// As LAMMPS' fix dt/reset: close the time account at the old step, then tell the pair style and the
+// fixes (integrators cache dt).
+void FixDtStiffness::set_time_step(double dt)
+{
+  if (dt == update->dt) return;
+  update->update_time();
+  update->dt = dt;
+  force->pair->reset_dt();
+  for (int i = 0; i < modify->nfix; i++) modify->fix[i]->reset_dt();
+}
+
+double FixDtStiffness::compute_scalar()
+{
+  return update->dt;
+}

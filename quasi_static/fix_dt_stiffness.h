@@ -1,0 +1,50 @@
+/* ----------------------------------------------------------------------
+   liggghts-crush: fix dt/stiffness, PFC's automatic time step: the step follows the current
+   Hertz-Mindlin contact stiffness (critical_step_law.h). See doc/fix_dt_stiffness.txt.
+
+   fix ID group dt/stiffness fraction f [every M] [growth g] [max dt_max]
+
+   Every M steps: dt = f x the smallest critical step of the group's particles, from their contacts
+   with other particles (eq. 8-9 with the youngsModulus/poissonsRatio of the types) and with the
+   walls of any fix wall/servo; dt grows by at most the factor g per update and never exceeds dt_max.
+   The LIGGGHTS 'timestep' is the starting value. Output: scalar = current step (s).
+------------------------------------------------------------------------- */
+#ifdef FIX_CLASS
+
+FixStyle(dt/stiffness,FixDtStiffness)
+
+#else
+
+#ifndef LMP_FIX_DT_STIFFNESS_H
+#define LMP_FIX_DT_STIFFNESS_H
+
+#include <vector>
+
+#include "critical_step_law.h"
+#include "fix.h"
+
+namespace LAMMPS_NS {
+
+class FixDtStiffness : public Fix {
+ public:
+  FixDtStiffness(class LAMMPS *, int, char **);
+  int setmask();
+  void init();
+  void setup(int);
+  void end_of_step();
+  double compute_scalar();
+
+ private:
+  void update_time_step();
+  void add_pair_contacts();
+  void set_time_step(double dt);
+
+  double fraction_, growth_, dt_max_;
+  std::vector<crush::HertzMindlinCoefficients> coefficients_;  // per type pair, (ntypes+1)^2
+  std::vector<crush::ContactStiffness> stiffness_;             // per local particle
+};
+
+}  // namespace LAMMPS_NS
+
+#endif
+#endif
