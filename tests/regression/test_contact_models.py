@@ -215,6 +215,22 @@ def case_servo_wall(liggghts, work):
     check(abs(printed(out, "Z_GRAIN") - (r - U)) / U < 1e-4, "the grain sits at r - U above the bottom wall")
 
 
+def case_dt_stiffness(liggghts, work):
+    """fix dt/stiffness: 0.5 x the critical step of the sphere touching both the other sphere and the
+    wall, by hand from eq. 8-9: translational sqrt(m / sum(1.5 k_N + k_S)), rotational
+    sqrt(0.4 m / sum k_S)."""
+    out = run_deck(liggghts, deck("in.dt_stiffness"), work)
+    d, U, Uw = 2e-4, 1e-7, 4e-8
+    m = 2650 * math.pi / 6 * d ** 3
+    pair, wall = math.sqrt(d / 2 * U), math.sqrt(d * Uw)
+    translational = 1.5 * C_NORMAL * (pair + wall) + C_SHEAR * pair
+    rotational = C_SHEAR * pair
+    expected = 0.5 * min(math.sqrt(m / translational), math.sqrt(0.4 * m / rotational))
+    dt = printed(out, "DT")
+    check(abs(dt / expected - 1) < 1e-6, "dt %.9g s = 0.5 x critical %.9g s by hand" % (dt, 2 * expected))
+    check(printed(out, "F_DT") == dt, "the fix's scalar is the time step")
+
+
 def case_bad_input(liggghts, work):
     """Errors name the keyword or property and what was expected."""
     cases = [
@@ -233,6 +249,11 @@ def case_bad_input(liggghts, work):
          [("z stress 1e4", "z stress 1e4"), (" type 2 x fixed", " x fixed")], "keyword 'type'"),
         ("servo wall unknown mode", "in.servo", {}, [("z stress 1e4", "z push 1e4")], "expects fixed, ramp"),
         ("ramp without parameters", "in.servo", {}, [("z stress 1e4", "z ramp")], "no 'ramp sigma_start"),
+        ("dt without fraction", "in.dt_stiffness", {}, [("dt/stiffness fraction 0.5", "dt/stiffness every 2")],
+         "keyword 'fraction' is required"),
+        ("dt fraction out of range", "in.dt_stiffness", {}, [("fraction 0.5", "fraction 2")], "'fraction' expects"),
+        ("dt unknown keyword", "in.dt_stiffness", {}, [("fraction 0.5", "fraction 0.5 safety 2")],
+         "unknown keyword 'safety'"),
         ("Poisson ratio out of range", "in.impact", {},
          [("poissonsRatio peratomtype 0.3 0.3", "poissonsRatio peratomtype 0.6 0.6")], "poisson"),
         ("missing Poisson ratio", "in.impact", {},
