@@ -1,6 +1,7 @@
 /* Crushing model (plain C++): strength draws (see crush_strength.h). */
 #include "crush_strength.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "crush_constants.h"
@@ -22,6 +23,7 @@ double StrengthDraw::draw(std::uint64_t tag) const
 {
   switch (distribution_) {
     case StrengthDistribution::normal: return draw_normal(tag);
+    case StrengthDistribution::normal_clipped: return draw_normal_clipped(tag);
     case StrengthDistribution::weibull: return draw_weibull(tag);
     case StrengthDistribution::constant: break;
   }
@@ -46,6 +48,14 @@ double StrengthDraw::draw_normal(std::uint64_t tag) const
   return sigma_lim0_;  // unreachable for cv < 100 (probability < 1e-1000)
 }
 
+double StrengthDraw::draw_normal_clipped(std::uint64_t tag) const
+{
+  const double u1 = uniform_open(seed_, tag, Stream::strength, 0);
+  const double u2 = uniform_open(seed_, tag, Stream::strength, 1);
+  const double z = std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * pi * u2);
+  return std::max(0.0, sigma_lim0_ + cv_ * sigma_lim0_ * z);
+}
+
 double StrengthDraw::draw_weibull(std::uint64_t tag) const
 {
   const double scale = sigma_lim0_ / std::tgamma(1.0 + 1.0 / weibull_m_);
@@ -57,6 +67,8 @@ double StrengthDraw::mean() const
 {
   if (distribution_ == StrengthDistribution::normal)
     return truncated_normal_mean(sigma_lim0_, cv_ * sigma_lim0_);
+  if (distribution_ == StrengthDistribution::normal_clipped)
+    return clipped_normal_mean(sigma_lim0_, cv_ * sigma_lim0_);
   return sigma_lim0_;
 }
 
@@ -64,6 +76,7 @@ double StrengthDraw::cv() const
 {
   switch (distribution_) {
     case StrengthDistribution::normal: return truncated_normal_cv(sigma_lim0_, cv_ * sigma_lim0_);
+    case StrengthDistribution::normal_clipped: return clipped_normal_cv(sigma_lim0_, cv_ * sigma_lim0_);
     case StrengthDistribution::weibull: {
       const double g1 = std::tgamma(1.0 + 1.0 / weibull_m_);
       const double g2 = std::tgamma(1.0 + 2.0 / weibull_m_);
@@ -100,6 +113,38 @@ double truncated_normal_cv(double mu, double sigma)
   const double lambda = inverse_mills(a);
   const double variance = sigma * sigma * (1.0 + a * lambda - lambda * lambda);
   return std::sqrt(variance) / truncated_normal_mean(mu, sigma);
+}
+
+// max(0, X), X ~ N(mu, sigma^2), a = mu/sigma: E = mu Phi(a) + sigma phi(a),
+// E[Y^2] = (mu^2 + sigma^2) Phi(a) + mu sigma phi(a).
+static void clipped_normal_moments(double mu, double sigma, double &first, double &second)
+{
+  require(mu > 0.0, "mean", mu, "> 0");
+  require(sigma >= 0.0, "standard deviation", sigma, ">= 0");
+  if (sigma == 0.0) {
+    first = mu;
+    second = mu * mu;
+    return;
+  }
+  const double a = mu / sigma;
+  const double phi = std::exp(-0.5 * a * a) / std::sqrt(2.0 * pi);
+  const double Phi = 0.5 * std::erfc(-a / std::sqrt(2.0));
+  first = mu * Phi + sigma * phi;
+  second = (mu * mu + sigma * sigma) * Phi + mu * sigma * phi;
+}
+
+double clipped_normal_mean(double mu, double sigma)
+{
+  double first, second;
+  clipped_normal_moments(mu, sigma, first, second);
+  return first;
+}
+
+double clipped_normal_cv(double mu, double sigma)
+{
+  double first, second;
+  clipped_normal_moments(mu, sigma, first, second);
+  return std::sqrt(std::max(0.0, second - first * first)) / first;
 }
 
 }  // namespace crush

@@ -6,6 +6,10 @@
    - normal (default): the normal N(sigma_lim0, (CV sigma_lim0)^2) truncated to s > 0, sampled by
      redrawing until positive. Its mean and CV are those of the truncated distribution, given in closed
      form by truncated_normal_mean() / truncated_normal_cv(); for CV = 1 the mean is 1.288 sigma_lim0.
+   - normal_clipped: the plain normal N(sigma_lim0, (CV sigma_lim0)^2), a negative draw clipped to
+     s = 0 (that particle breaks under its first load). A PFC implementation that draws the normal
+     without guarding its sign behaves like this; for CV = 1 one particle in six, fragments included,
+     breaks at its first contact. Mean and CV: clipped_normal_mean() / clipped_normal_cv().
    - weibull: P(s) = 1 - exp(-(s/s0)^m) with m = weibull_m and s0 chosen so that the mean is sigma_lim0
      (the CV then follows from m: 0.120 for m = 10).
    - constant: s = sigma_lim0 for every particle.
@@ -18,7 +22,7 @@
 
 namespace crush {
 
-enum class StrengthDistribution { normal, weibull, constant };
+enum class StrengthDistribution { normal, normal_clipped, weibull, constant };
 
 class StrengthDraw {
  public:
@@ -26,7 +30,7 @@ class StrengthDraw {
   StrengthDraw(StrengthDistribution distribution, double sigma_lim0, double cv, double weibull_m,
                std::uint64_t seed);
 
-  // The strength s (Pa) of the particle with this tag; always > 0.
+  // The strength s (Pa) of the particle with this tag; > 0 (normal_clipped: >= 0).
   double draw(std::uint64_t tag) const;
   // Mean and coefficient of variation of the distribution actually sampled.
   double mean() const;
@@ -34,6 +38,7 @@ class StrengthDraw {
 
  private:
   double draw_normal(std::uint64_t tag) const;
+  double draw_normal_clipped(std::uint64_t tag) const;
   double draw_weibull(std::uint64_t tag) const;
 
   StrengthDistribution distribution_;
@@ -44,6 +49,9 @@ class StrengthDraw {
 // Mean and CV of N(mu, sigma^2) truncated to (0, inf), mu > 0, sigma >= 0.
 double truncated_normal_mean(double mu, double sigma);
 double truncated_normal_cv(double mu, double sigma);
+// Mean and CV of max(0, X) for X ~ N(mu, sigma^2), mu > 0.
+double clipped_normal_mean(double mu, double sigma);
+double clipped_normal_cv(double mu, double sigma);
 
 }  // namespace crush
 

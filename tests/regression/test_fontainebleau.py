@@ -6,6 +6,7 @@
 The full 100 MPa runs are scripts/fontainebleau_runs.sh (doc/results.md)."""
 import os
 import re
+import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -15,6 +16,17 @@ ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)
 DECKS = os.path.join(ROOT, "examples", "fontainebleau")
 TRACKING = 0.02        # the measured wall stress follows the ramp within 2% above 1 MPa
 N2_PARTICLES = 1249    # the N = 2 sample from the default seed
+
+
+def plot(work, expected, folders=None):
+    """post/plot.py on run folders writes the expected PNGs (PNG signature, not empty)."""
+    figures = os.path.join(work, "figures")
+    subprocess.run(["/usr/bin/python3", os.path.join(ROOT, "post", "plot.py"), "--out", figures] + (folders or [work]),
+                   check=True)
+    for name in expected:
+        with open(os.path.join(figures, name), "rb") as f:
+            data = f.read()
+        check(data[:8] == b"\x89PNG\r\n\x1a\n" and len(data) > 10000, "post/plot.py drew %s" % name)
 
 
 def check(condition, message):
@@ -76,6 +88,8 @@ def case_oedometer_short(liggghts, work, ranks=1):
     check(len(snapshots[0][2]) >= N2_PARTICLES and "radius" in snapshots[0][1], "dump at 1 MPa with radii")
     progress = re.findall(r"^wall/servo: ramp +([0-9.]+)%.*left (\d+) s", out, re.M)
     check(len(progress) == 20 and float(progress[-1][0]) == 100.0, "20 progress lines, the last at 100%")
+    if int(ranks) == 1:
+        plot(work, ["fig4_oedometric.png", "fig6_stress_paths.png", "fig_crushing.png"])
 
 
 def case_isotropic_short(liggghts, work):
@@ -120,6 +134,7 @@ def case_triaxial_short(liggghts, work):
     peak_loose = max(r["q_over_p"] for r in loose)
     check(peak_dense > peak_loose and 0.6 < peak_dense < 1.6,
           "q/p peak: dense %.3f > loose %.3f (tan 0.27 friction)" % (peak_dense, peak_loose))
+    plot(work, ["fig3a_triaxial.png"], [os.path.join(work, "dense"), os.path.join(work, "loose")])
 
 
 def case_porosity_all_scales(liggghts, work):

@@ -15,12 +15,13 @@ struct Moments {
   double mean, cv;
 };
 
-Moments sample_moments(const StrengthDraw &draw, int n, std::uint64_t first_tag = 1)
+Moments sample_moments(const StrengthDraw &draw, int n, std::uint64_t first_tag = 1, bool zeros = false)
 {
   double sum = 0.0, sum2 = 0.0;
   for (int i = 0; i < n; ++i) {
     const double s = draw.draw(first_tag + i);
-    EXPECT_GT(s, 0.0);
+    if (zeros) EXPECT_GE(s, 0.0);
+    else EXPECT_GT(s, 0.0);
     sum += s;
     sum2 += s * s;
   }
@@ -48,6 +49,20 @@ TEST(StrengthDraw, TruncatedNormalWithPaperCvReproducesItsMoments)
   EXPECT_NEAR(m.mean / draw.mean(), 1.0, 0.01);
   EXPECT_NEAR(m.cv / draw.cv(), 1.0, 0.01);
   EXPECT_NEAR(draw.mean(), 1.2876 * 5e9, 1e-4 * 5e9);
+}
+
+TEST(StrengthDraw, ClippedNormalWithPaperCvIsZeroOneTimeInSix)
+{
+  // The plain normal of Table 1 (CV = 1), negative draws clipped to 0: P(s = 0) = Phi(-1) = 0.1587,
+  // mean = mu Phi(1) + sigma phi(1) = 1.0833 mu, the rest as drawn.
+  const StrengthDraw draw(StrengthDistribution::normal_clipped, 5e9, 1.0, 10.0, 1234567);
+  const Moments m = sample_moments(draw, 100000, 1, true);
+  int zeros = 0;
+  for (std::uint64_t tag = 1; tag <= 100000; ++tag) zeros += draw.draw(tag) == 0.0;
+  EXPECT_NEAR(zeros / 1e5, 0.158655, 0.004);
+  EXPECT_NEAR(draw.mean(), (0.841345 + 0.241971) * 5e9, 1e-5 * 5e9);
+  EXPECT_NEAR(m.mean / draw.mean(), 1.0, 0.01);
+  EXPECT_NEAR(m.cv / draw.cv(), 1.0, 0.01);
 }
 
 TEST(StrengthDraw, NormalWithSmallCvIsThePlainNormal)
