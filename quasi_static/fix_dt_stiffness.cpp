@@ -4,10 +4,12 @@
 #include "fix_dt_stiffness.h"
 
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <string>
 
 #include "atom.h"
+#include "comm.h"
 #include "crush_model_error.h"
 #include "error.h"
 #include "fix_crush_materials.h"
@@ -29,7 +31,7 @@ void expect(Error *error, bool ok, const std::string &message)
 }  // namespace
 
 FixDtStiffness::FixDtStiffness(LAMMPS *lmp, int narg, char **arg) :
-  Fix(lmp, narg, arg), fraction_(-1.0), growth_(1.01), dt_max_(1e300)
+  Fix(lmp, narg, arg), fraction_(-1.0), growth_(1.01), dt_max_(1e300), dt_start_(0.0), warned_(false)
 {
   for (int iarg = 3; iarg < narg; iarg += 2) {
     const std::string key = arg[iarg];
@@ -82,6 +84,7 @@ void FixDtStiffness::init()
 void FixDtStiffness::setup(int)
 {
   update_time_step();
+  if (dt_start_ == 0.0) dt_start_ = update->dt;  // the first run's: chunked runs keep it
 }
 
 void FixDtStiffness::end_of_step()
@@ -97,14 +100,21 @@ void FixDtStiffness::update_time_step()
   for (int i = 0; i < modify->nfix; i++)
     if (strcmp(modify->fix[i]->style, "wall/servo") == 0)
       static_cast<FixWallServo *>(modify->fix[i])->add_contact_stiffness(stiffness_);
-  double smallest = 1e300;
-  for (int i = 0; i < nlocal; i++)
-    if (atom->mask[i] & groupbit) smallest = std::min(smallest, crush::critical_step(atom->rmass[i], stiffness_[i]));
+  double smallest = 1e300, radius = 0.0;
+  for (int i = 0; i < nlocal; i++) {
+    if (!(atom->mask[i] & groupbit)) continue;
+    const double dt = crush::critical_step(atom->rmass[i], stiffness_[i]);
+    if (dt < smallest) {
+      smallest = dt;
+      radius = atom->radius[i];
+    }
+  }
   double smallest_all = 1e300;
   MPI_Allreduce(&smallest, &smallest_all, 1, MPI_DOUBLE, MPI_MIN, world);
   // Without any contact the step stays: nothing says how stiff the first contact will be.
   if (smallest_all < 1e300)
     set_time_step(crush::next_time_step(update->dt, smallest_all, fraction_, growth_, dt_max_));
+  if (!warned_ && dt_start_ > 0.0 && update->dt < 1e-3 * dt_start_) warn_collapse(smallest == smallest_all ? radius : 0.0);
 }
 
 // Every overlapping pair of the pair style's half list (newton off: a pair with a ghost is listed on
@@ -133,6 +143,23 @@ void FixDtStiffness::add_pair_contacts()
       if (j < nlocal) crush::add_contact(stiffness_[j], c, dt_term, overlap);
     }
   }
+}
+
+// Once: a step a thousand times below the starting one means tiny particles in contact (a
+// crushing cascade without a comminution limit); a ramp counted in steps then loads in no time.
+void FixDtStiffness::warn_collapse(double local_radius)
+{
+  warned_ = true;
+  double radius = 0.0;
+  MPI_Allreduce(&local_radius, &radius, 1, MPI_DOUBLE, MPI_MAX, world);
+  if (comm->me != 0) return;
+  char msg[512];
+  snprintf(msg, sizeof(msg),
+           "fix dt/stiffness: time step %g s, below 1/1000 of the %g s at the start: a particle of "
+           "radius %g m sets it; a load ramp counted in steps now loads in almost no physical time (set "
+           "'dmin' in fix crush to stop fragments breaking further)",
+           update->dt, dt_start_, radius);
+  error->warning(FLERR, msg);
 }
 
 // As LAMMPS' fix dt/reset: close the time account at the old step, then tell the pair style and the

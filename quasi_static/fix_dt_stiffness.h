@@ -38,8 +38,11 @@ class FixDtStiffness : public Fix {
   void update_time_step();
   void add_pair_contacts();
   void set_time_step(double dt);
+  void warn_collapse(double local_radius);
 
   double fraction_, growth_, dt_max_;
+  double dt_start_;  // the step after the first setup
+  bool warned_;
   std::vector<crush::HertzMindlinCoefficients> coefficients_;  // per type pair, (ntypes+1)^2
   std::vector<crush::ContactStiffness> stiffness_;             // per local particle
 };
