@@ -25,10 +25,11 @@ for ranks in 1 2; do
   echo "O-$n on $ranks rank(s): ${seconds[$ranks]} s, $events events"
 done
 awk -v a="${seconds[1]}" -v b="${seconds[2]}" 'BEGIN {printf "speed-up 1 -> 2 ranks = %.2f (target >= 1.7)\n", a / b}'
-# Ghosts per rank in the last run's statistics (2 ranks, one cut plane across the 4 mm sample).
+# Ghosts per rank in the last statistics LIGGGHTS printed on 2 ranks (the end of the preparation: the
+# chunked ramp runs print none), one cut plane across the 4 mm sample.
 awk '/^Nlocal:/ {local = $2} /^Nghost:/ {ghost = $2} END {
   doubles = 10  # forward communication per ghost per step: x, v, omega (3 each) and radius
-  printf "2 ranks: %.0f particles and %.0f ghosts per rank (one cut plane: %.0f ghosts per face)\n", local, ghost, ghost
+  printf "2 ranks, prepared sample: %.0f particles and %.0f ghosts per rank (one cut plane: %.0f ghosts per face)\n", local, ghost, ghost
   printf "projection, cubic decomposition (6 faces per rank, ghosts per face scaling with the face area), %d doubles per ghost per step:\n", doubles
   printf "  %12s %6s %14s %14s %18s %14s\n", "particles", "ranks", "local/rank", "ghosts/rank", "bytes/step/rank", "ghost/local"
   total = 2 * local
