@@ -160,12 +160,8 @@ void FixCrush::setup_limit_factors()
 
 void FixCrush::refresh_recorder()
 {
-  load_.assign(atom->nlocal, 0.0);
+  load_.assign(atom->nlocal + atom->nghost, 0.0);
   recorder_.load = load_.data();
-  const int nall = atom->nlocal + atom->nghost;
-  inv_radius_.resize(nall);
-  for (int i = 0; i < nall; i++) inv_radius_[i] = 1.0 / atom->radius[i];
-  recorder_.inv_radius = inv_radius_.data();
   recorder_.nlocal = atom->nlocal;
   array_atom = fix_data_->array_atom;
 }

@@ -76,7 +76,6 @@ class FixCrush : public Fix {
   CrushRecorder recorder_;
   double **inv_limit_factor_;        // per type pair: (4 E'/3)^2
   std::vector<double> load_;         // per local atom: largest F_n (4 E'/3)^2 / r'^2 this step
-  std::vector<double> inv_radius_;   // per local and ghost atom: 1 / radius
   class Irregular *irregular_;
   FILE *log_;
 

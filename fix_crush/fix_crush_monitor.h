@@ -20,23 +20,23 @@ class LAMMPS;
 // F_n / F_lim of eq. 5: the strength, a per-particle factor, stays out of the per-contact work.
 class CrushRecorder {
  public:
-  CrushRecorder() : load(0), inv_radius(0), nlocal(0), inv_limit_factor(0) {}
+  CrushRecorder() : load(0), nlocal(0), inv_limit_factor(0) {}
 
-  // inv_limit_factor[itype][jtype] = (4 E'/3)^2 (Pa^2); r' the contact's effective radius (m);
-  // F_n the elastic normal force (N).
-  inline void record(int i, int j, bool is_wall, int itype, int jtype, double normal_force) const
+  // inv_limit_factor[itype][jtype] = (4 E'/3)^2 (Pa^2); F_n the elastic normal force (N); r' the
+  // contact's effective radius (m), r_i r_j/(r_i + r_j) (a plane: r_i), which the contact model has
+  // at hand: reading per-particle radii here would add a scattered load per contact.
+  inline void record(int i, int j, bool is_wall, int itype, int jtype, double normal_force,
+                     double effective_radius) const
   {
-    // 1/r' = 1/r_i + 1/r_j (a plane: 1/r_i), from inverse radii computed once per step.
-    const double inv_r_eff = is_wall ? inv_radius[i] : inv_radius[i] + inv_radius[j];
-    const double value = normal_force * inv_limit_factor[itype][jtype] * inv_r_eff * inv_r_eff;
+    const double value = normal_force * inv_limit_factor[itype][jtype] / (effective_radius * effective_radius);
     // Branch-free maxima: the comparisons are unpredictable, a mispredicted branch costs more than
     // the store.
     load[i] = load[i] > value ? load[i] : value;
-    if (!is_wall && j < nlocal) load[j] = load[j] > value ? load[j] : value;
+    // load has room for ghosts too: no test of j against nlocal (ghost entries are ignored)
+    if (!is_wall) load[j] = load[j] > value ? load[j] : value;
   }
 
-  double *load;              // per local atom (Pa^3)
-  const double *inv_radius;  // per local and ghost atom (1/m)
+  double *load;              // per local and ghost atom (Pa^3); fix crush reads the local ones
   int nlocal;
   double **inv_limit_factor;
 };

@@ -122,7 +122,7 @@ namespace ContactModels {
 
       // Breakage check against the elastic (Hertzian) force, whose contact area eq. 5 assumes.
       if (const CrushRecorder *recorder = monitor.recorder())
-        recorder->record(sidata.i, sidata.j, sidata.is_wall, itype, jtype, Fn_elastic);
+        recorder->record(sidata.i, sidata.j, sidata.is_wall, itype, jtype, Fn_elastic, 0.5 * diameter_term);
 
       const double scale = sidata.is_wall ? sidata.area_ratio : 1.0;
       i_forces.delta_F[0] += scale * Fn * sidata.en[0];

@@ -201,7 +201,7 @@ void FixWallServo::apply_contacts(double *force, double *stiffness)
         f[i][a] += side == 0 ? Fn : -Fn;
         local[2 * a + side] += Fn;
         if (side == 1) local[6 + a] += 1.5 * kn;
-        if (recorder) recorder->record(i, -1, true, type[i], wall_type_, Fn);
+        if (recorder) recorder->record(i, -1, true, type[i], wall_type_, Fn, r);
       }
   }
   double all[9];
