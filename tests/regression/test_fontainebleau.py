@@ -137,6 +137,21 @@ def case_triaxial_short(liggghts, work):
     plot(work, ["fig3a_triaxial.png"], [os.path.join(work, "dense"), os.path.join(work, "loose")])
 
 
+def case_sample_reuse(liggghts, work):
+    """in.prepare writes sample_N2.restart; in.oedometer -var reuse 1 starts from it: the same
+    particles and porosity, and the test runs on."""
+    out = run_deck(liggghts, os.path.join(DECKS, "in.prepare"), work)
+    count, porosity, _ = prepared(out)
+    out = run_deck(liggghts, os.path.join(DECKS, "in.oedometer"), work, {"reuse": 1, "sigma_max": 2e6}, keep=True)
+    check("read from sample_N2.restart" in out, "the oedometer deck read the prepared sample")
+    count2, porosity2, stresses = prepared(out)
+    check(count2 == count and abs(porosity2 - porosity) < 1e-9,
+          "same sample: %d particles, porosity %.6f (prepared %.6f)" % (count2, porosity2, porosity))
+    check(all(abs(s / 1e5 - 1.0) < 0.02 for s in stresses), "at 100 kPa on every wall after reading (%s)" % stresses)
+    rows = read_history(os.path.join(work, "history_O2.csv"))
+    check(rows[-1]["sigma_target"] > 1.5e6 and rows[-1]["events"] > 0, "the test ran on and crushed grains")
+
+
 def case_porosity_all_scales(liggghts, work):
     """The samples N = 1.5 and 1 start at 0.39 +- 0.005 too (slow: about 2.5 min)."""
     for n, particles in (("1.5", 2961), ("1", 9995)):
