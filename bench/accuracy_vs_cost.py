@@ -178,8 +178,7 @@ def pareto(rows, out):
 
 def fig7(runs, out):
     fig, ax = plt.subplots(figsize=(6, 4.5))
-    scale = [r for r in runs if r["L_R"] == 0.1 and r["dmin_mm"] == 0.05 and r["dt_fraction"] == 0.5
-             and r["crush_every"] == 1]
+    scale = [r for r in runs if is_base(r)]
     scale.sort(key=lambda r: r["initial"])
     ax.loglog([r["initial"] for r in scale], [r["seconds"] / 60 for r in scale], "o-",
               label="liggghts-crush, %d ranks" % (scale[0]["ranks"] if scale else 2))

@@ -162,7 +162,6 @@ void FixCrush::refresh_recorder()
 {
   load_.assign(atom->nlocal + atom->nghost, 0.0);
   recorder_.load = load_.data();
-  recorder_.nlocal = atom->nlocal;
   array_atom = fix_data_->array_atom;
 }
 

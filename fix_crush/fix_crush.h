@@ -75,7 +75,7 @@ class FixCrush : public Fix {
   char *data_id_;
   CrushRecorder recorder_;
   double **inv_limit_factor_;        // per type pair: (4 E'/3)^2
-  std::vector<double> load_;         // per local atom: largest F_n (4 E'/3)^2 / r'^2 this step
+  std::vector<double> load_;         // per local and ghost atom: largest F_n (4 E'/3)^2 / r'^2 this step
   class Irregular *irregular_;
   FILE *log_;
 

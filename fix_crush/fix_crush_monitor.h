@@ -2,9 +2,10 @@
    liggghts-crush: the link between the contact models and fix crush.
 
    A fix crush owns a CrushRecorder; the hertz/scaled normal model asks its CrushMonitor for it at
-   each contact and, when one exists, records the contact's load on the particle and, if it is a local
-   ball, on its partner (F_n / F_lim of eq. 5/7/10 once divided by the strength term). Without a fix crush the per-contact cost is one integer compare:
-   the monitor re-resolves its recorder only when a crush fix was created or deleted.
+   each contact and, when one exists, records the contact's load on the particle and on its partner
+   ball (F_n / F_lim of eq. 5/7/10 once divided by the strength term). Without a fix crush the
+   per-contact cost is one integer compare: the monitor re-resolves its recorder only when a crush fix
+   was created or deleted.
 ------------------------------------------------------------------------- */
 #ifndef LMP_FIX_CRUSH_MONITOR_H
 #define LMP_FIX_CRUSH_MONITOR_H
@@ -15,12 +16,12 @@ namespace LAMMPS_NS {
 
 class LAMMPS;
 
-// Records, per particle, the largest F_n / ((3/(4 E'))^2 r'^2) over its contacts during one force
+// Records, per particle, the largest F_n (4 E'/3)^2 / r'^2 over its contacts during one force
 // computation. Fix crush divides it by (pi sigma_lim)^3 afterwards, which gives the largest
 // F_n / F_lim of eq. 5: the strength, a per-particle factor, stays out of the per-contact work.
 class CrushRecorder {
  public:
-  CrushRecorder() : load(0), nlocal(0), inv_limit_factor(0) {}
+  CrushRecorder() : load(0), inv_limit_factor(0) {}
 
   // inv_limit_factor[itype][jtype] = (4 E'/3)^2 (Pa^2); F_n the elastic normal force (N); r' the
   // contact's effective radius (m), r_i r_j/(r_i + r_j) (a plane: r_i), which the contact model has
@@ -37,7 +38,6 @@ class CrushRecorder {
   }
 
   double *load;              // per local and ghost atom (Pa^3); fix crush reads the local ones
-  int nlocal;
   double **inv_limit_factor;
 };
 

@@ -192,11 +192,9 @@ void FixWallServo::apply_contacts(double *force, double *stiffness)
     const double r = radius[i];
     for (int a = 0; a < 3; a++)
       for (int side = 0; side < 2; side++) {
-        const double gap = side == 0 ? x[i][a] - wall_[2 * a] : wall_[2 * a + 1] - x[i][a];
-        const double U = r - gap;
+        const double U = overlap(x[i], r, a, side);
         if (U <= 0.0) continue;
-        // eq. 8 with the wall convention: D1 D2/(D1+D2) -> D = 2r.
-        const double kn = normal_coeff_[type[i]][0] * std::sqrt(2.0 * r * U);
+        const double kn = secant_stiffness(type[i], r, U);
         const double Fn = kn * U;
         f[i][a] += side == 0 ? Fn : -Fn;
         local[2 * a + side] += Fn;
@@ -217,11 +215,12 @@ void FixWallServo::add_contact_stiffness(std::vector<crush::ContactStiffness> &s
   const int *mask = atom->mask, *type = atom->type;
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
-    for (int a = 0; a < 3; a++) {
-      const double U_lo = radius[i] - (x[i][a] - wall_[2 * a]), U_hi = radius[i] - (wall_[2 * a + 1] - x[i][a]);
-      for (double U : {U_lo, U_hi})
+    for (int a = 0; a < 3; a++)
+      for (int side = 0; side < 2; side++) {
+        const double U = overlap(x[i], radius[i], a, side);
+        // the tangent 1.5 k_N, in the arithmetic order the time-step references were recorded with
         if (U > 0.0) stiffness[i].translational += 1.5 * normal_coeff_[type[i]][0] * std::sqrt(2.0 * radius[i] * U);
-    }
+      }
   }
 }
 

@@ -23,6 +23,7 @@ FixStyle(wall/servo,FixWallServo)
 #ifndef LMP_FIX_WALL_SERVO_H
 #define LMP_FIX_WALL_SERVO_H
 
+#include <cmath>
 #include <vector>
 
 #include "critical_step_law.h"
@@ -53,6 +54,14 @@ class FixWallServo : public Fix {
   void parse_mode(int axis, int narg, char **arg, int &iarg);
   void apply_contacts(double *force, double *stiffness);
   void move_walls(const double *force, const double *force_before, const double *stiffness);
+  // Overlap (m; <= 0: no contact) of a particle at x of radius r with the lo (side 0) or hi (side 1)
+  // wall of axis a.
+  double overlap(const double *x, double r, int a, int side) const
+  {
+    return r - (side == 0 ? x[a] - wall_[2 * a] : wall_[2 * a + 1] - x[a]);
+  }
+  // eq. 8 with the wall convention D1 D2/(D1+D2) -> D = 2r: the secant k_N (N/m) at overlap U.
+  double secant_stiffness(int type, double r, double U) const { return normal_coeff_[type][0] * std::sqrt(2.0 * r * U); }
   double area(int axis) const;
   double stress(int axis) const;
   void report_progress();

@@ -6,6 +6,13 @@ import shutil
 import subprocess
 
 
+def check(condition, message):
+    """A test assertion that prints what it checked."""
+    if not condition:
+        raise AssertionError(message)
+    print("ok: " + message)
+
+
 def run_deck(liggghts, deck, workdir, variables=None, ranks=1, expect_fail=False, keep=False):
     """Runs `liggghts -in deck` in workdir (created afresh, or kept with keep=True: to run a deck on
     the outputs of another) with -var name value pairs; returns the screen output. Decks may include

@@ -10,18 +10,12 @@ import shutil
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from liggghts_run import printed, read_dump, run_deck  # noqa: E402
+from liggghts_run import check, printed, read_dump, run_deck  # noqa: E402
 
 HERE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "contact")
 G, NU = 3e9, 0.3                                    # in.materials: E = 7.8e9, nu = 0.3
 C_NORMAL = 2 * math.sqrt(2) * G / (3 * (1 - NU))   # eq. 8: k_N = C_NORMAL sqrt(Dt U)
 C_SHEAR = 2 * math.sqrt(2) * G / (2 - NU)          # eq. 9 with |F| = k_N U: k_S = C_SHEAR sqrt(Dt U)
-
-
-def check(condition, message):
-    if not condition:
-        raise AssertionError(message)
-    print("ok: " + message)
 
 
 def deck(name):

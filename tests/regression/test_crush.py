@@ -9,18 +9,12 @@ import shutil
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from liggghts_run import printed, read_dump, run_deck  # noqa: E402
+from liggghts_run import check, printed, read_dump, run_deck  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 CRUSH = os.path.join(os.path.dirname(os.path.abspath(__file__)), "crush")
 SINGLE = os.path.join(ROOT, "examples", "single_grain", "in.single_grain")
 N0 = 512  # particles of the compression decks
-
-
-def check(condition, message):
-    if not condition:
-        raise AssertionError(message)
-    print("ok: " + message)
 
 
 def read_events(path):

@@ -10,7 +10,7 @@ import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from liggghts_run import read_dump, run_deck  # noqa: E402
+from liggghts_run import check, read_dump, run_deck  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 DECKS = os.path.join(ROOT, "examples", "fontainebleau")
@@ -27,12 +27,6 @@ def plot(work, expected, folders=None):
         with open(os.path.join(figures, name), "rb") as f:
             data = f.read()
         check(data[:8] == b"\x89PNG\r\n\x1a\n" and len(data) > 10000, "post/plot.py drew %s" % name)
-
-
-def check(condition, message):
-    if not condition:
-        raise AssertionError(message)
-    print("ok: " + message)
 
 
 def read_history(path):
