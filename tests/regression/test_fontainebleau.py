@@ -35,6 +35,11 @@ def read_history(path):
         return [dict(zip(header, map(float, line.split(",")))) for line in f if line.strip()]
 
 
+def count_events(path):
+    with open(path) as f:
+        return sum(1 for line in f) - 1
+
+
 def prepared(out):
     """(particles, porosity, stresses) of in.prepare's SAMPLE line."""
     m = re.search(r"^SAMPLE N = \S+: (\d+) particles, porosity (\S+) at sigma x y z (\S+) (\S+) (\S+) Pa", out, re.M)
@@ -144,6 +149,18 @@ def case_sample_reuse(liggghts, work):
     check(all(abs(s / 1e5 - 1.0) < 0.02 for s in stresses), "at 100 kPa on every wall after reading (%s)" % stresses)
     rows = read_history(os.path.join(work, "history_O2.csv"))
     check(rows[-1]["sigma_target"] > 1.5e6 and rows[-1]["events"] > 0, "the test ran on and crushed grains")
+
+
+def case_strength_clipped(liggghts, work):
+    """distribution normal_clipped: one grain in six (Phi(-1) = 0.159 for CV = 1) draws zero strength
+    and breaks under its first load, so O-2 crushes about 200 of its 1249 grains, and a sixth of
+    their fragments in turn, at once (430 events); the default truncated draw breaks a handful."""
+    run_deck(liggghts, os.path.join(DECKS, "in.oedometer"), work, {"sigma_max": 2e5, "distribution": "normal_clipped"})
+    clipped = count_events(os.path.join(work, "events_O2.csv"))
+    check(clipped >= 0.12 * N2_PARTICLES, "normal_clipped: %d events by 0.2 MPa (>= 12%% of the grains)" % clipped)
+    run_deck(liggghts, os.path.join(DECKS, "in.oedometer"), os.path.join(work, "normal"), {"sigma_max": 2e5})
+    truncated = count_events(os.path.join(work, "normal", "events_O2.csv"))
+    check(truncated < 0.02 * N2_PARTICLES, "normal (truncated): %d events by 0.2 MPa" % truncated)
 
 
 def case_porosity_all_scales(liggghts, work):
