@@ -23,6 +23,7 @@
 #include "irregular.h"
 #include "memory.h"
 #include "modify.h"
+#include "neighbor.h"
 #include "pair_gran.h"
 #include "update.h"
 #include "hertz_mindlin_scaled_law.h"
@@ -44,6 +45,24 @@ crush::CrushSettings parse(Error *error, int narg, char **arg)
   return crush::CrushSettings();
 }
 
+// Each particle's F_n / F_lim of this step, load / (pi sigma_lim)^3, into data[i][RATIO]; clears
+// the load for the next step; returns the largest ratio in the group. (The product would be 0 x inf
+// for an unloaded particle of zero strength, hence the test.) A function of its own, so that the
+// running maximum stays in a register.
+double store_ratios(int n, double *load, const double *inv_strength_term, const int *mask, int groupbit,
+                    double **data)
+{
+  double largest = 0.0;
+  for (int i = 0; i < n; i++) {
+    const double ratio = load[i] > 0.0 ? load[i] * inv_strength_term[i] : 0.0;
+    load[i] = 0.0;
+    data[i][RATIO] = ratio;
+    const double counted = (mask[i] & groupbit) ? ratio : 0.0;
+    largest = counted > largest ? counted : largest;
+  }
+  return largest;
+}
+
 }  // namespace
 
 FixCrush::FixCrush(LAMMPS *lmp, int narg, char **arg) :
@@ -52,8 +71,9 @@ FixCrush::FixCrush(LAMMPS *lmp, int narg, char **arg) :
   strength_(settings_.distribution, settings_.sigma_lim0, settings_.cv, settings_.weibull_m, settings_.seed),
   nfrag_(static_cast<int>(crush::fragment_layout(settings_.layout, 1.0).size())),
   fix_data_(NULL), data_id_(NULL), inv_limit_factor_(NULL), irregular_(NULL), log_(NULL),
-  events_total_(0.0), removed_volume_(0.0), max_ratio_(0.0), smallest_fragment_diameter_(0.0),
-  initial_largest_diameter_(0.0), next_tag_(0.0), replace_seconds_(0.0), particle_count_(0.0), initialized_(false)
+  events_total_(0.0), removed_volume_(0.0), max_ratio_(0.0), local_max_ratio_(0.0), max_ratio_step_(-1), smallest_fragment_diameter_(0.0),
+  initial_largest_diameter_(0.0), next_tag_(0.0), replace_seconds_(0.0), particle_count_(0.0), initialized_(false),
+  refresh_needed_(true)
 {
   if (!atom->radius_flag || !atom->rmass_flag || !atom->density_flag)
     error->all(FLERR, "fix crush needs 'atom_style granular' (radius, mass and density per atom)");
@@ -158,11 +178,15 @@ void FixCrush::setup_limit_factors()
     }
 }
 
+// All slots, local and ghost, start at zero. Needed only when the atoms were renumbered
+// (reneighboring) or a setup force computation recorded into them: on other steps end_of_step()
+// zeroes each local slot it has read, and ghost slots are never read.
 void FixCrush::refresh_recorder()
 {
   load_.assign(atom->nlocal + atom->nghost, 0.0);
   recorder_.load = load_.data();
   array_atom = fix_data_->array_atom;
+  refresh_needed_ = false;
 }
 
 void FixCrush::draw_missing_strengths()
@@ -188,13 +212,37 @@ void FixCrush::setup_pre_force(int vflag)
   pre_force(vflag);
 }
 
+// Atoms appear (fragments, fix insert, ...) and are renumbered only when LIGGGHTS reneighbors:
+// the per-atom work of this step is then done once, not every step.
 void FixCrush::pre_force(int)
 {
   if (!initialized_)
     error->all(FLERR, "fix crush was defined after the last full run setup ('run ... pre no'): run once "
                       "with 'pre yes' (or 'run 0') after defining it");
+  if (!refresh_needed_ && neighbor->ago != 0) return;
   refresh_recorder();
   draw_missing_strengths();
+  update_strength_terms();
+}
+
+// 1 / (pi sigma_lim)^3 per local atom, so that each step's check multiplies instead of divides.
+// Infinite for a particle of zero strength: it breaks under any load.
+void FixCrush::update_strength_terms()
+{
+  double **data = fix_data_->array_atom;
+  inv_strength_term_.resize(atom->nlocal);
+  for (int i = 0; i < atom->nlocal; i++) {
+    const double s = crush::pi * data[i][STRENGTH];
+    inv_strength_term_[i] = s > 0.0 ? 1.0 / (s * s * s) : HUGE_VAL;
+  }
+}
+
+// Modify::setup() has just reset the per-atom data of a new fix property/atom to its defaults
+// (strength -1): draw again, and clear what the setup force computation recorded.
+void FixCrush::setup(int)
+{
+  draw_missing_strengths();
+  refresh_needed_ = true;
 }
 
 void FixCrush::end_of_step()
@@ -204,20 +252,15 @@ void FixCrush::end_of_step()
   const int *mask = atom->mask;
   const double *radius = atom->radius;
   const bool check = update->ntimestep % settings_.every == 0;
-  double local_max = 0.0;
+  const double local_max = store_ratios(atom->nlocal, load_.data(), inv_strength_term_.data(), mask, groupbit, data);
+  // The mothers, in a second pass: this step's loop stays free of calls, and is skipped when no
+  // particle here reached its limit (nearly every step).
   std::vector<int> mothers;
-  const double *load = load_.data();
-  for (int i = 0; i < atom->nlocal; i++) {
-    // F_n / F_lim = load / (pi sigma_lim)^3; a particle of zero strength breaks under any load.
-    const double s = crush::pi * data[i][STRENGTH];
-    const double strength_term = s * s * s;
-    const double ratio = strength_term > 0.0 ? load[i] / strength_term : (load[i] > 0.0 ? HUGE_VAL : 0.0);
-    data[i][RATIO] = ratio;
-    if (!(mask[i] & groupbit)) continue;
-    local_max = std::max(local_max, ratio);
-    if (check && ratio >= 1.0 && 2.0 * radius[i] >= settings_.dmin) mothers.push_back(i);
-  }
-  MPI_Allreduce(&local_max, &max_ratio_, 1, MPI_DOUBLE, MPI_MAX, world);
+  if (check && local_max >= 1.0)
+    for (int i = 0; i < atom->nlocal; i++)
+      if ((mask[i] & groupbit) && data[i][RATIO] >= 1.0 && 2.0 * radius[i] >= settings_.dmin) mothers.push_back(i);
+  local_max_ratio_ = local_max;
+  max_ratio_step_ = -1;  // reduced over processors when output asks for it, not every step
   if (!check) return;
   // One reduction: the events, and the particle count, so that particles lost through the box
   // (which LIGGGHTS deletes silently by default) stop the run instead of unbalancing the books.
@@ -447,7 +490,14 @@ double FixCrush::compute_vector(int n)
 {
   if (n == 0) return events_total_;
   if (n == 1) return removed_volume_;
-  if (n == 2) return max_ratio_;
+  if (n == 2) {
+    // Called by every processor (thermo, variables, fix ave/time), as LAMMPS requires.
+    if (max_ratio_step_ != update->ntimestep) {
+      MPI_Allreduce(&local_max_ratio_, &max_ratio_, 1, MPI_DOUBLE, MPI_MAX, world);
+      max_ratio_step_ = update->ntimestep;
+    }
+    return max_ratio_;
+  }
   return replace_seconds_;
 }
 

@@ -2,9 +2,9 @@
    liggghts-crush: fix crush, grain crushing by replacement with inscribed fragments
    (Ciantia et al. 2014). See doc/fix_crush.txt.
 
-   Per step: pre_force() clears each particle's largest F_n / F_lim, which the hertz/scaled contact
-   model records through the CrushRecorder during the pair and wall force computations;
-   end_of_step() finds the particles that reached their limit, agrees on them across processors
+   Per step: the hertz/scaled contact model records each particle's largest F_n / F_lim through the
+   CrushRecorder during the pair and wall force computations (pre_force() clears the record after
+   reneighboring, end_of_step() as it reads it); end_of_step() finds the particles that reached their limit, agrees on them across processors
    (sorted by tag, so fragment tags and strengths never depend on the decomposition), logs them, and
    schedules a reneighboring; pre_exchange() of the next step replaces each by its fragments.
    The physics (limit, strengths, layout, grading) is in the plain crush_*.h files.
@@ -36,6 +36,7 @@ class FixCrush : public Fix {
   int setmask();
   void init();
   void setup_pre_force(int);
+  void setup(int);
   void pre_force(int);
   void end_of_step();
   void pre_exchange();
@@ -59,6 +60,7 @@ class FixCrush : public Fix {
   void setup_limit_factors();
   void refresh_recorder();
   void draw_missing_strengths();
+  void update_strength_terms();
   void check_time_step(double smallest_radius) const;
   double smallest_possible_radius() const;
   double smallest_radius() const;
@@ -76,19 +78,23 @@ class FixCrush : public Fix {
   CrushRecorder recorder_;
   double **inv_limit_factor_;        // per type pair: (4 E'/3)^2
   std::vector<double> load_;         // per local and ghost atom: largest F_n (4 E'/3)^2 / r'^2 this step
+  std::vector<double> inv_strength_term_;  // per local atom: 1 / (pi sigma_lim)^3 (Pa^-3), at reneighboring
   class Irregular *irregular_;
   FILE *log_;
 
   std::vector<Event> pending_;       // agreed at end_of_step, replaced at the next pre_exchange
   double events_total_;
   double removed_volume_;
-  double max_ratio_;
+  double max_ratio_;                 // over all processors, at step max_ratio_step_
+  double local_max_ratio_;           // this processor's, at the last end_of_step
+  bigint max_ratio_step_;
   double smallest_fragment_diameter_;
   double initial_largest_diameter_;
   double next_tag_;
   double replace_seconds_;           // wall time spent in replace_mothers(), for the event cost
   double particle_count_;            // particles at the last check: losses stop the run
   bool initialized_;                 // init() ran: 'run pre no' right after the fix skips it
+  bool refresh_needed_;              // clear every load slot at the next pre_force (see refresh_recorder)
 };
 
 }  // namespace LAMMPS_NS

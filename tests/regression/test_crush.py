@@ -139,12 +139,19 @@ def case_compression(liggghts, work, ranks=1):
     box = 8 * 0.00021
     crossing = [e for e in events_log if min(float(e[k]) % (box * 0.88) for k in "xyz") < 0.0001]
     print("note: %d events within a radius of a periodic face" % len(crossing))
+    initial = {int(r["id"]): r for r in read_dump(os.path.join(work, "run", "strengths0.dump"))[0][2]}
+    check(len(initial) == N0 and all(r["f_crush[1]"] > 0.0 for r in initial.values()),
+          "every strength drawn before the first step (a dump at step 0 shows them)")
     if ranks > 1:
         reference = os.path.join(work, "np1")
         compression(liggghts, reference, 1)
-        a = open(os.path.join(reference, "strengths0.dump")).read()
-        b = open(os.path.join(work, "run", "strengths0.dump")).read()
-        check(a == b, "initial strengths identical to the 1-rank run, tag by tag")
+        # create_atoms numbers the lattice per processor, so a tag may name a grain of the other size
+        # on 1 rank; a strength is a function of tag and size: identical where both agree.
+        ref_initial = {int(r["id"]): r for r in read_dump(os.path.join(reference, "strengths0.dump"))[0][2]}
+        same_size = [t for t in initial if initial[t]["radius"] == ref_initial[t]["radius"]]
+        check(len(same_size) > N0 // 3 and all(initial[t]["f_crush[1]"] == ref_initial[t]["f_crush[1]"]
+                                               for t in same_size),
+              "initial strengths of the %d tags with the same size as on 1 rank identical" % len(same_size))
         # Summation order differs with the decomposition, so which grain reaches its limit first may
         # differ late in the run: stated tolerance, 5% of the events plus one.
         reference_events = read_thermo(os.path.join(reference, "log.liggghts"))[-1]["crush[1]"]
