@@ -84,6 +84,8 @@ def load(folder):
         "name": name, "N": float(setting["N"][0]), "L_R": float(setting["L_R"][0]),
         "dmin_mm": float(setting["dmin_mm"][0]), "dt_fraction": float(setting["dt_fraction"][0]),
         "crush_every": int(setting["crush_every"][0]), "ranks": int(setting["ranks"][0]),
+        # runs made before the dt_every knob existed updated the step every step
+        "dt_every": int(setting["dt_every"][0]) if "dt_every" in setting else 1,
         "seconds": float(setting["seconds"][0]), "initial": int(m.group(1)) if m else 0,
         "final": int(history["particles"][-1]), "events": int(history["events"][-1]),
         "rss_mb": int(rss.group(1)) / 1024.0 if rss else float("nan"),
@@ -107,11 +109,12 @@ def errors(run, ref, suffix=""):
 
 
 def is_base(r):
-    return r["L_R"] == 0.1 and r["dmin_mm"] == 0.05 and r["dt_fraction"] == 0.5 and r["crush_every"] == 1
+    return (r["L_R"] == 0.1 and r["dmin_mm"] == 0.05 and r["dt_fraction"] == 0.5 and r["crush_every"] == 1
+            and r["dt_every"] == 1)
 
 
 ERRORS = ["err_porosity", "err_K0", "err_gsd_percent", "err_I_G", "err_yield_relative"]
-COLUMNS = (["name", "N", "L_R", "dmin_mm", "dt_fraction", "crush_every", "ranks", "initial", "final", "events",
+COLUMNS = (["name", "N", "L_R", "dmin_mm", "dt_fraction", "dt_every", "crush_every", "ranks", "initial", "final", "events",
             "seconds", "speedup_vs_reference", "rss_mb", "dt_min", "time_end", "yield_MPa"] + ERRORS
            + [e + "_vs_base" for e in ERRORS])
 
@@ -137,14 +140,14 @@ def main(out):
         w.writeheader()
         for row in rows:
             w.writerow({k: ("%.4g" % row[k] if isinstance(row.get(k), float) else row.get(k, "")) for k in COLUMNS})
-    table = ["| setting | N | L_R | dmin (mm) | dt fraction | every | particles (initial, final) | events | runtime (s) | speed-up | smallest dt (s) | max dn | max dK0 | max dGSD (%) | max dI_G | yield (MPa) | vs own-N base: dn, dK0, dGSD, dI_G |",
-             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    table = ["| setting | N | L_R | dmin (mm) | dt fraction | dt every | crush every | particles (initial, final) | events | runtime (s) | speed-up | smallest dt (s) | max dn | max dK0 | max dGSD (%) | max dI_G | yield (MPa) | vs own-N base: dn, dK0, dGSD, dI_G |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in rows:
         vs_base = ("%.4f, %.3f, %.2f, %.4f" % (r["err_porosity_vs_base"], r["err_K0_vs_base"], r["err_gsd_percent_vs_base"],
                                               r["err_I_G_vs_base"]) if "err_porosity_vs_base" in r else "")
-        table.append("| %s | %g | %g | %s | %g | %d | %d, %d | %d | %.0f | %.1f | %.2g | %.4f | %.3f | %.2f | %.4f | %.1f | %s |" % (
+        table.append("| %s | %g | %g | %s | %g | %d | %d | %d, %d | %d | %.0f | %.1f | %.2g | %.4f | %.3f | %.2f | %.4f | %.1f | %s |" % (
             r["name"], r["N"], r["L_R"], "none" if r["dmin_mm"] == 0 else "%g" % r["dmin_mm"], r["dt_fraction"],
-            r["crush_every"], r["initial"], r["final"], r["events"], r["seconds"], r["speedup_vs_reference"], r["dt_min"],
+            r["dt_every"], r["crush_every"], r["initial"], r["final"], r["events"], r["seconds"], r["speedup_vs_reference"], r["dt_min"],
             r["err_porosity"], r["err_K0"], r["err_gsd_percent"], r["err_I_G"], r["yield_MPa"], vs_base))
     open(os.path.join(out, "accuracy_vs_cost_table.md"), "w").write("\n".join(table) + "\n")
     print("\n".join(table))

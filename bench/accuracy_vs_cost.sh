@@ -17,24 +17,25 @@ ranks=${RANKS:-2}
 liggghts=${LIGGGHTS:-$here/build/liggghts}
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
 
-# name: N  L_R  dmin (mm, before scaling; 0 = none)  dt_fraction  crush_every
+# name: N  L_R  dmin (mm, before scaling; 0 = none)  dt_fraction  dt_every  crush_every
 settings="
-reference      1   0.05 0.025 0.5 1
-N1             1   0.1  0.05 0.5 1
-N1.5           1.5 0.1  0.05 0.5 1
-N2             2   0.1  0.05 0.5 1
-N2_LR0.05      2   0.05 0.05 0.5 1
-N2_LR0.2       2   0.2  0.05 0.5 1
-N2_dmin_none   2   0.1  0    0.5 1
-N2_dmin0.025   2   0.1  0.025 0.5 1
-N2_dmin0.1     2   0.1  0.1  0.5 1
-N2_dt0.3       2   0.1  0.05 0.3 1
-N2_dt0.8       2   0.1  0.05 0.8 1
-N2_every10     2   0.1  0.05 0.5 10
-nodmin_N1      1   0.05 0    0.5 1
+reference      1   0.05 0.025 0.5 1  1
+N1             1   0.1  0.05  0.5 1  1
+N1.5           1.5 0.1  0.05  0.5 1  1
+N2             2   0.1  0.05  0.5 1  1
+N2_LR0.05      2   0.05 0.05  0.5 1  1
+N2_LR0.2       2   0.2  0.05  0.5 1  1
+N2_dmin_none   2   0.1  0     0.5 1  1
+N2_dmin0.025   2   0.1  0.025 0.5 1  1
+N2_dmin0.1     2   0.1  0.1   0.5 1  1
+N2_dt0.3       2   0.1  0.05  0.3 1  1
+N2_dt0.8       2   0.1  0.05  0.8 1  1
+N2_dtevery10   2   0.1  0.05  0.5 10 1
+N2_every10     2   0.1  0.05  0.5 1  10
+nodmin_N1      1   0.05 0     0.5 1  1
 "
 wanted=" ${*:-all} "
-echo "$settings" | while read -r name n lr dmin frac every; do
+echo "$settings" | while read -r name n lr dmin frac dt_every every; do
   [ -n "$name" ] || continue
   # nodmin_N1 (the reference without a comminution limit: 7 minutes, a cascade to nanometres) only
   # when named
@@ -42,14 +43,14 @@ echo "$settings" | while read -r name n lr dmin frac every; do
   dir=$out/$name
   if [ -f "$dir/done" ]; then echo "== $name: done before"; continue; fi
   rm -rf "$dir" && mkdir -p "$dir" && cp "$here"/examples/fontainebleau/in.* "$dir"/
-  echo "== $name: N $n, L_R $lr, dmin $dmin mm, dt_fraction $frac, crush_every $every ($ranks ranks)"
+  echo "== $name: N $n, L_R $lr, dmin $dmin mm, dt_fraction $frac, dt_every $dt_every, crush_every $every ($ranks ranks)"
   start=$(date +%s%N)
   (cd "$dir" && /usr/bin/time -v mpirun -np "$ranks" "$liggghts" -in in.oedometer -var N "$n" -var LR "$lr" \
-     -var dmin "${dmin}e-3" -var dt_fraction "$frac" -var crush_every "$every" -log log.liggghts \
+     -var dmin "${dmin}e-3" -var dt_fraction "$frac" -var dt_every "$dt_every" -var crush_every "$every" -log log.liggghts \
      < /dev/null > screen.txt 2> time.txt)
   seconds=$(awk -v a="$start" -v b="$(date +%s%N)" 'BEGIN {printf "%.1f", (b - a) / 1e9}')
-  printf "name,N,L_R,dmin_mm,dt_fraction,crush_every,ranks,seconds\n%s,%s,%s,%s,%s,%s,%s,%s\n" \
-    "$name" "$n" "$lr" "$dmin" "$frac" "$every" "$ranks" "$seconds" > "$dir/setting.csv"
+  printf "name,N,L_R,dmin_mm,dt_fraction,dt_every,crush_every,ranks,seconds\n%s,%s,%s,%s,%s,%s,%s,%s,%s\n" \
+    "$name" "$n" "$lr" "$dmin" "$frac" "$dt_every" "$every" "$ranks" "$seconds" > "$dir/setting.csv"
   grep -E '^wall/servo: ramp 100' "$dir/screen.txt" || true
   echo "   $seconds s"
   touch "$dir/done"

@@ -17,6 +17,7 @@
 #include "force.h"
 #include "modify.h"
 #include "neigh_list.h"
+#include "neighbor.h"
 #include "pair.h"
 #include "update.h"
 
@@ -31,7 +32,7 @@ void expect(Error *error, bool ok, const std::string &message)
 }  // namespace
 
 FixDtStiffness::FixDtStiffness(LAMMPS *lmp, int narg, char **arg) :
-  Fix(lmp, narg, arg), fraction_(-1.0), growth_(1.01), dt_max_(1e300), dt_start_(0.0), warned_(false)
+  Fix(lmp, narg, arg), fraction_(-1.0), growth_(1.01), dt_max_(1e300), dt_start_(0.0), every_(1), stiffening_(false), warned_(false)
 {
   for (int iarg = 3; iarg < narg; iarg += 2) {
     const std::string key = arg[iarg];
@@ -42,7 +43,7 @@ FixDtStiffness::FixDtStiffness(LAMMPS *lmp, int narg, char **arg) :
       fraction_ = value;
     } else if (key == "every") {
       expect(error, has_value && value >= 1.0, "keyword 'every' expects a number of steps >= 1");
-      nevery = static_cast<int>(value);
+      every_ = static_cast<int>(value);
     } else if (key == "growth") {
       expect(error, has_value && value > 1.0, "keyword 'growth' expects a factor > 1");
       growth_ = value;
@@ -87,9 +88,13 @@ void FixDtStiffness::setup(int)
   if (dt_start_ == 0.0) dt_start_ = update->dt;  // the first run's: chunked runs keep it
 }
 
+// Every M steps; at every step with a fresh neighbour list, since particles appear (crushing
+// fragments, insertions) only then and a new small particle may need a smaller step at once; and at
+// the step after an update that shrank the step by more than the growth factor: contacts stiffening
+// that fast (fragments pressed together) are followed step by step until they settle.
 void FixDtStiffness::end_of_step()
 {
-  update_time_step();
+  if (update->ntimestep % every_ == 0 || neighbor->ago == 0 || stiffening_) update_time_step();
 }
 
 void FixDtStiffness::update_time_step()
@@ -112,8 +117,10 @@ void FixDtStiffness::update_time_step()
   double smallest_all = 1e300;
   MPI_Allreduce(&smallest, &smallest_all, 1, MPI_DOUBLE, MPI_MIN, world);
   // Without any contact the step stays: nothing says how stiff the first contact will be.
+  const double previous = update->dt;
   if (smallest_all < 1e300)
     set_time_step(crush::next_time_step(update->dt, smallest_all, fraction_, growth_, dt_max_));
+  stiffening_ = update->dt * growth_ < previous;
   if (!warned_ && dt_start_ > 0.0 && update->dt < 1e-3 * dt_start_) warn_collapse(smallest == smallest_all ? radius : 0.0);
 }
 

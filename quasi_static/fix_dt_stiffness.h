@@ -4,7 +4,7 @@
 
    fix ID group dt/stiffness fraction f [every M] [growth g] [max dt_max]
 
-   Every M steps: dt = f x the smallest critical step of the group's particles, from their contacts
+   Every M steps, after each reneighboring and while the step shrinks fast: dt = f x the smallest critical step of the group's particles, from their contacts
    with other particles (eq. 8-9 with the youngsModulus/poissonsRatio of the types) and with the
    walls of any fix wall/servo; dt grows by at most the factor g per update and never exceeds dt_max.
    The LIGGGHTS 'timestep' is the starting value. Output: scalar = current step (s).
@@ -42,6 +42,8 @@ class FixDtStiffness : public Fix {
 
   double fraction_, growth_, dt_max_;
   double dt_start_;  // the step after the first setup
+  int every_;        // update interval (steps); reneighboring steps update too
+  bool stiffening_;  // the last update shrank the step by more than growth_: update next step too
   bool warned_;
   std::vector<crush::HertzMindlinCoefficients> coefficients_;  // per type pair, (ntypes+1)^2
   std::vector<crush::ContactStiffness> stiffness_;             // per local particle

@@ -12,9 +12,8 @@ import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from liggghts_run import read_dump, run_deck  # noqa: E402
+from liggghts_run import read_dump, read_thermo, run_deck  # noqa: E402
 from reference_cases import CASES, IGNORED, ROOT, tolerance  # noqa: E402
-from test_crush import read_thermo  # noqa: E402
 
 REFERENCE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "reference")
 

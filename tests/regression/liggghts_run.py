@@ -50,6 +50,24 @@ def printed(output, key):
     return float(m.group(1))
 
 
+def read_thermo(log):
+    """Rows of the thermo output (dicts keyed by the header) from a LIGGGHTS log file."""
+    rows, header = [], None
+    for line in open(log, errors="replace"):
+        words = line.split()
+        if words and words[0] == "Step":
+            header = words
+            continue
+        if header and len(words) == len(header):
+            try:
+                rows.append(dict(zip(header, map(float, words))))
+            except ValueError:
+                header = None
+        elif header and words and not words[0].lstrip("-").isdigit():
+            header = None
+    return rows
+
+
 def read_dump(path):
     """Snapshots of a LIGGGHTS 'dump custom' file: a list of (step, columns, rows), rows as dicts."""
     snapshots = []

@@ -10,7 +10,7 @@ import shutil
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from liggghts_run import check, printed, read_dump, run_deck  # noqa: E402
+from liggghts_run import check, printed, read_dump, read_thermo, run_deck  # noqa: E402
 
 HERE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "contact")
 G, NU = 3e9, 0.3                                    # in.materials: E = 7.8e9, nu = 0.3
@@ -223,6 +223,22 @@ def case_dt_stiffness(liggghts, work):
     dt = printed(out, "DT")
     check(abs(dt / expected - 1) < 1e-6, "dt %.9g s = 0.5 x critical %.9g s by hand" % (dt, 2 * expected))
     check(printed(out, "F_DT") == dt, "the fix's scalar is the time step")
+
+
+def case_dt_stiffness_every(liggghts, work):
+    """fix dt/stiffness 'every 1000' while a squeezed grain breaks into 14 fragments at step 2: the
+    step shrinks at the reneighboring that brings the fragments (the fragment on each wall keeps the
+    mother's overlap with 7% of her mass), and is followed step by step while the fragments, pressed
+    together, stiffen faster than the growth factor: the same steps as 'every 1'."""
+    steps = {}
+    for every in (1, 1000):
+        run_deck(liggghts, deck("in.dt_stiffness_crush"), os.path.join(work, "every%d" % every), {"every": every})
+        steps[every] = [row["Dt"] for row in read_thermo(os.path.join(work, "every%d" % every, "log.liggghts"))]
+    dt = steps[1000]
+    check(len(dt) == 7, "7 thermo rows (steps 0-6)")
+    check(dt[2] < 0.5 * dt[1], "step 2, fragments present: dt %.4g s < half the mother's %.4g s" % (dt[2], dt[1]))
+    check(dt == steps[1], "every 1000 gives the steps of every 1 while the fragments stiffen: %s"
+          % ", ".join("%.4g" % v for v in dt))
 
 
 def case_bad_input(liggghts, work):

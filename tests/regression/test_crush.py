@@ -9,7 +9,7 @@ import shutil
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from liggghts_run import check, printed, read_dump, run_deck  # noqa: E402
+from liggghts_run import check, printed, read_dump, read_thermo, run_deck  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 CRUSH = os.path.join(os.path.dirname(os.path.abspath(__file__)), "crush")
@@ -22,24 +22,6 @@ def read_events(path):
         lines = f.read().splitlines()
     header = lines[0].split(",")
     return [dict(zip(header, line.split(","))) for line in lines[1:]]
-
-
-def read_thermo(log):
-    """Rows of the thermo output (dicts keyed by the header) from a LIGGGHTS log file."""
-    rows, header = [], None
-    for line in open(log, errors="replace"):
-        words = line.split()
-        if words and words[0] == "Step":
-            header = words
-            continue
-        if header and len(words) == len(header):
-            try:
-                rows.append(dict(zip(header, map(float, words))))
-            except ValueError:
-                header = None
-        elif header and words and not words[0].lstrip("-").isdigit():
-            header = None
-    return rows
 
 
 def case_single_grain(liggghts, work):
