@@ -73,7 +73,7 @@ FixCrush::FixCrush(LAMMPS *lmp, int narg, char **arg) :
   fix_data_(NULL), data_id_(NULL), inv_limit_factor_(NULL), irregular_(NULL), log_(NULL),
   events_total_(0.0), removed_volume_(0.0), max_ratio_(0.0), local_max_ratio_(0.0), max_ratio_step_(-1), smallest_fragment_diameter_(0.0),
   initial_largest_diameter_(0.0), next_tag_(0.0), replace_seconds_(0.0), particle_count_(0.0), initialized_(false),
-  refresh_needed_(true)
+  refresh_needed_(true), recording_(true)
 {
   if (!atom->radius_flag || !atom->rmass_flag || !atom->density_flag)
     error->all(FLERR, "fix crush needs 'atom_style granular' (radius, mass and density per atom)");
@@ -219,10 +219,26 @@ void FixCrush::pre_force(int)
   if (!initialized_)
     error->all(FLERR, "fix crush was defined after the last full run setup ('run ... pre no'): run once "
                       "with 'pre yes' (or 'run 0') after defining it");
+  record_on_check_steps();
   if (!refresh_needed_ && neighbor->ago != 0) return;
   refresh_recorder();
   draw_missing_strengths();
   update_strength_terms();
+}
+
+// With 'every' > 1 the contact models record loads only on the steps that are checked: on the
+// others the recorder is detached, and the per-contact cost is that of no fix crush at all.
+void FixCrush::record_on_check_steps()
+{
+  const bool record = is_check_step();
+  if (record == recording_) return;
+  CrushMonitor::attach(lmp, record ? &recorder_ : NULL);
+  recording_ = record;
+}
+
+bool FixCrush::is_check_step() const
+{
+  return update->ntimestep % settings_.every == 0;
 }
 
 // 1 / (pi sigma_lim)^3 per local atom, so that each step's check multiplies instead of divides.
@@ -251,17 +267,17 @@ void FixCrush::end_of_step()
   array_atom = data;
   const int *mask = atom->mask;
   const double *radius = atom->radius;
-  const bool check = update->ntimestep % settings_.every == 0;
+  // Nothing was recorded on the other steps: the ratios stay those of the last check.
+  if (!is_check_step()) return;
   const double local_max = store_ratios(atom->nlocal, load_.data(), inv_strength_term_.data(), mask, groupbit, data);
   // The mothers, in a second pass: this step's loop stays free of calls, and is skipped when no
   // particle here reached its limit (nearly every step).
   std::vector<int> mothers;
-  if (check && local_max >= 1.0)
+  if (local_max >= 1.0)
     for (int i = 0; i < atom->nlocal; i++)
       if ((mask[i] & groupbit) && data[i][RATIO] >= 1.0 && 2.0 * radius[i] >= settings_.dmin) mothers.push_back(i);
   local_max_ratio_ = local_max;
   max_ratio_step_ = -1;  // reduced over processors when output asks for it, not every step
-  if (!check) return;
   // One reduction: the events, and the particle count, so that particles lost through the box
   // (which LIGGGHTS deletes silently by default) stop the run instead of unbalancing the books.
   double local_counts[2] = {static_cast<double>(mothers.size()), static_cast<double>(atom->nlocal)}, counts[2];

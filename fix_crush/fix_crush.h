@@ -59,6 +59,8 @@ class FixCrush : public Fix {
   void check_pair_style() const;
   void setup_limit_factors();
   void refresh_recorder();
+  void record_on_check_steps();
+  bool is_check_step() const;
   void draw_missing_strengths();
   void update_strength_terms();
   void check_time_step(double smallest_radius) const;
@@ -95,6 +97,7 @@ class FixCrush : public Fix {
   double particle_count_;            // particles at the last check: losses stop the run
   bool initialized_;                 // init() ran: 'run pre no' right after the fix skips it
   bool refresh_needed_;              // clear every load slot at the next pre_force (see refresh_recorder)
+  bool recording_;                   // the recorder is attached (with 'every' > 1: on check steps only)
 };
 
 }  // namespace LAMMPS_NS

@@ -75,6 +75,34 @@ def case_single_grain(liggghts, work):
     check(abs(printed(out, "PASSING_0.1MM") - 100.0) < 1e-9, "GSD at 0.1 mm: 100%")
 
 
+def case_single_grain_every(liggghts, work):
+    """fix crush 'every 500' on the single grain: the contact forces are recorded on check steps only,
+    so the grain breaks at the first multiple of 500 at or after the step where 'every 1' breaks it,
+    the logged F_n/F_lim is that of the force applied by then (analytic F_lim), and the F_n/F_lim
+    output between checks is that of the last check."""
+    rate, dt, every = 8.0, 1e-8, 500
+    steps, ratios = {}, {}
+    for k in (1, every):
+        out = run_deck(liggghts, SINGLE, os.path.join(work, "every%d" % k), {"every": k})
+        events = read_events(os.path.join(work, "every%d" % k, "crush_events.csv"))
+        check(len(events) == 1, "every %d: one crushing event" % k)
+        steps[k], ratios[k] = int(events[0]["step"]), float(events[0]["force_ratio"])
+        f_lim = printed(out, "F_LIM")
+        # the last thermo row of the first run (step n_before, not a multiple of 500)
+        first = [r for r in read_thermo(os.path.join(work, "every%d" % k, "log.liggghts")) if r["Atoms"] == 1][-1]
+        last_check = first["Step"] // k * k
+        check(first["Step"] % every != 0 and abs(first["crush[3]"] / (rate * last_check * dt / f_lim) - 1) < 2e-3,
+              "every %d: F_n/F_lim %.5f at step %d = applied force / F_lim at step %d, the last check"
+              % (k, first["crush[3]"], first["Step"], last_check))
+    expected = -(-steps[1] // every) * every
+    check(steps[every] == expected, "every %d breaks at step %d, the first check at or after step %d (every 1)"
+          % (every, steps[every], steps[1]))
+    applied = rate * steps[every] * dt / f_lim
+    check(abs(ratios[every] / applied - 1) < 0.01 and ratios[every] > ratios[1],
+          "logged F_n/F_lim %.5f at the check = applied force / F_lim %.5f (every 1: %.5f)"
+          % (ratios[every], applied, ratios[1]))
+
+
 def case_single_grain_ranks(liggghts, work):
     """The single-grain case on 1, 2 and 4 ranks (the grain sits on the processor boundary): the
     same tags break at the same step into the same fragment tags."""
