@@ -71,9 +71,9 @@ FixCrush::FixCrush(LAMMPS *lmp, int narg, char **arg) :
   strength_(settings_.distribution, settings_.sigma_lim0, settings_.cv, settings_.weibull_m, settings_.seed),
   nfrag_(static_cast<int>(crush::fragment_layout(settings_.layout, 1.0).size())),
   fix_data_(NULL), data_id_(NULL), inv_limit_factor_(NULL), irregular_(NULL), log_(NULL),
-  events_total_(0.0), removed_volume_(0.0), max_ratio_(0.0), local_max_ratio_(0.0), max_ratio_step_(-1), smallest_fragment_diameter_(0.0),
-  initial_largest_diameter_(0.0), next_tag_(0.0), replace_seconds_(0.0), particle_count_(0.0), initialized_(false),
-  refresh_needed_(true), recording_(true)
+  events_total_(0.0), removed_volume_(0.0), max_ratio_(0.0), local_max_ratio_(0.0), max_ratio_step_(-1),
+  smallest_fragment_diameter_(0.0), initial_largest_diameter_(0.0), next_tag_(0.0), replace_seconds_(0.0),
+  particle_count_(0.0), initialized_(false), refresh_needed_(true), recording_(true)
 {
   if (!atom->radius_flag || !atom->rmass_flag || !atom->density_flag)
     error->all(FLERR, "fix crush needs 'atom_style granular' (radius, mass and density per atom)");
@@ -263,12 +263,12 @@ void FixCrush::setup(int)
 
 void FixCrush::end_of_step()
 {
+  // Nothing was recorded on the other steps: the ratios stay those of the last check.
+  if (!is_check_step()) return;
   double **data = fix_data_->array_atom;
   array_atom = data;
   const int *mask = atom->mask;
   const double *radius = atom->radius;
-  // Nothing was recorded on the other steps: the ratios stay those of the last check.
-  if (!is_check_step()) return;
   const double local_max = store_ratios(atom->nlocal, load_.data(), inv_strength_term_.data(), mask, groupbit, data);
   // The mothers, in a second pass: this step's loop stays free of calls, and is skipped when no
   // particle here reached its limit (nearly every step).

@@ -2,11 +2,12 @@
    liggghts-crush: fix crush, grain crushing by replacement with inscribed fragments
    (Ciantia et al. 2014). See doc/fix_crush.txt.
 
-   Per step: the hertz/scaled contact model records each particle's largest F_n / F_lim through the
-   CrushRecorder during the pair and wall force computations (pre_force() clears the record after
-   reneighboring, end_of_step() as it reads it); end_of_step() finds the particles that reached their limit, agrees on them across processors
-   (sorted by tag, so fragment tags and strengths never depend on the decomposition), logs them, and
-   schedules a reneighboring; pre_exchange() of the next step replaces each by its fragments.
+   Per checked step: the hertz/scaled contact model records each particle's largest F_n / F_lim
+   through the CrushRecorder during the pair and wall force computations (pre_force() clears the
+   record after reneighboring, end_of_step() as it reads it); end_of_step() finds the particles that
+   reached their limit, agrees on them across processors (sorted by tag, so fragment tags and
+   strengths never depend on the decomposition), logs them, and schedules a reneighboring;
+   pre_exchange() of the next step replaces each by its fragments.
    The physics (limit, strengths, layout, grading) is in the plain crush_*.h files.
 ------------------------------------------------------------------------- */
 #ifdef FIX_CLASS

@@ -32,7 +32,8 @@ void expect(Error *error, bool ok, const std::string &message)
 }  // namespace
 
 FixDtStiffness::FixDtStiffness(LAMMPS *lmp, int narg, char **arg) :
-  Fix(lmp, narg, arg), fraction_(-1.0), growth_(1.01), dt_max_(1e300), dt_start_(0.0), every_(1), stiffening_(false), warned_(false)
+  Fix(lmp, narg, arg), fraction_(-1.0), growth_(1.01), dt_max_(1e300), dt_start_(0.0), every_(1),
+  stiffening_(false), warned_(false)
 {
   for (int iarg = 3; iarg < narg; iarg += 2) {
     const std::string key = arg[iarg];

@@ -4,10 +4,11 @@
 
    fix ID group dt/stiffness fraction f [every M] [growth g] [max dt_max]
 
-   Every M steps, after each reneighboring and while the step shrinks fast: dt = f x the smallest critical step of the group's particles, from their contacts
-   with other particles (eq. 8-9 with the youngsModulus/poissonsRatio of the types) and with the
-   walls of any fix wall/servo; dt grows by at most the factor g per update and never exceeds dt_max.
-   The LIGGGHTS 'timestep' is the starting value. Output: scalar = current step (s).
+   Every M steps, after each reneighboring and while the step shrinks fast: dt = f x the smallest
+   critical step of the group's particles, from their contacts with other particles (eq. 8-9 with
+   the youngsModulus/poissonsRatio of the types) and with the walls of any fix wall/servo; dt grows
+   by at most the factor g per update and never exceeds dt_max. The LIGGGHTS 'timestep' is the
+   starting value. Output: scalar = current step (s).
 ------------------------------------------------------------------------- */
 #ifdef FIX_CLASS
 
