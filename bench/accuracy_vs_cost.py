@@ -12,7 +12,7 @@ Errors, each the largest absolute difference from the reference:
 and the yield stress: where the two straight lines of e against log(sigma_v) fitted to 0.3-3 MPa
 and to 50-100 MPa meet (its relative difference). A setting that changes one knob at N = 1.5 or 2
 is also compared with the base setting of its own N (L_R 0.1, dmin 0.05 mm, dt fraction 0.5,
-every 1): that difference is the knob's alone, without the change of sample that N brings.
+dt every 1, crush every 1): that difference is the knob's alone, without the change of sample that N brings.
 Also reported: the smallest time step of the run and the physical time it covered. Writes OUT_DIR/accuracy_vs_cost.csv,
 accuracy_vs_cost_table.md, pareto.png (error against runtime) and fig7_runtime.png (runtime against
 initial particles, with the PFC3D runtimes of the paper's Table 3).
@@ -30,14 +30,16 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "post"))
+import plot  # noqa: E402
+
 PAPER_PFC3D_MINUTES = {1304: 31.0, 3084: 67.0, 10397: 183.0}  # Table 3, O-2, O-1.5, O-1, one core
 GRID = np.logspace(math.log10(2e5), 8, 60)
 
 
 def read_csv(path):
-    with open(path) as f:
-        rows = list(csv.DictReader(f))
-    return {k: np.array([float(r[k]) for r in rows]) for k in rows[0] if k is not None and k != "name"}
+    """post/plot.py's reader, columns as numpy arrays; setting.csv's 'name' is text."""
+    return {k: np.array(v) for k, v in plot.read_csv(path, skip=("name",)).items()}
 
 
 def running_mean(values, width=5):

@@ -5,7 +5,8 @@
    each contact and, when one exists, records the contact's load on the particle and on its partner
    ball (F_n / F_lim of eq. 5/7/10 once divided by the strength term). Without a fix crush the
    per-contact cost is one integer compare: the monitor re-resolves its recorder only when a crush fix
-   was created or deleted.
+   was created or deleted, or (with 'every' > 1) is attached for a checked step and detached for the
+   others.
 ------------------------------------------------------------------------- */
 #ifndef LMP_FIX_CRUSH_MONITOR_H
 #define LMP_FIX_CRUSH_MONITOR_H
@@ -52,7 +53,8 @@ class CrushMonitor {
     return recorder_;
   }
 
-  // Called by fix crush when it is created (recorder) or deleted (NULL).
+  // Called by fix crush when it is created or starts a checked step (recorder), and when it is
+  // deleted or starts an unchecked step with 'every' > 1 (NULL).
   static void attach(LAMMPS *lmp, const CrushRecorder *recorder);
 
   static int generation;  // changes whenever a recorder is attached or detached

@@ -30,10 +30,12 @@ GSD_NAME = re.compile(r"gsd_([OI])([0-9.]+)_100MPa\.csv$")
 STYLE = {"1": "-", "1.5": "--", "2": ":"}
 
 
-def read_csv(path):
+def read_csv(path, skip=()):
+    """Columns of a numeric CSV file as lists of floats, keyed by the header; columns named in skip
+    (text) are left out."""
     with open(path) as f:
         rows = list(csv.DictReader(f))
-    return {key: [float(r[key]) for r in rows] for key in rows[0] if key is not None} if rows else {}
+    return {key: [float(r[key]) for r in rows] for key in rows[0] if key is not None and key not in skip} if rows else {}
 
 
 def collect(paths):
