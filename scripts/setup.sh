@@ -24,7 +24,8 @@ esac
 say() { printf '[setup] %s\n' "$*"; }
 
 packages=(g++ make cmake ccache patch libopenmpi-dev openmpi-bin libeigen3-dev libgtest-dev
-          xz-utils dpkg-dev python3 python3-numpy python3-matplotlib gcovr)
+          xz-utils dpkg-dev python3 python3-numpy python3-matplotlib gcovr
+          time)  # GNU time: peak memory in bench/memory.sh and bench/accuracy_vs_cost.sh
 
 missing=()
 for p in "${packages[@]}"; do
