@@ -16,8 +16,10 @@ set(LIGGGHTS_TARBALL_SHA256 "c18721d9a870c5170f03b91e4f1ffe13335c66ed1f0ff2c64eb
 
 set(LIGGGHTS_COPY "${CMAKE_BINARY_DIR}/liggghts-3.8.0")
 set(LIGGGHTS_SRC "${LIGGGHTS_COPY}/src")
-file(GLOB LIGGGHTS_PATCHES "${PROJECT_SOURCE_DIR}/patches/*.patch")
+# A patch added or edited re-runs the configuration, which redoes the copy (the stamp below).
+file(GLOB LIGGGHTS_PATCHES CONFIGURE_DEPENDS "${PROJECT_SOURCE_DIR}/patches/*.patch")
 list(SORT LIGGGHTS_PATCHES)
+set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${LIGGGHTS_PATCHES})
 
 # A stamp that changes whenever the origin or a patch changes: the copy is redone then, not otherwise.
 if(LIGGGHTS_SOURCE_DIR)

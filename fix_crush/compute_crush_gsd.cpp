@@ -12,6 +12,7 @@
 #include "crush_model_error.h"
 #include "error.h"
 #include "fix_crush.h"
+#include "input_keyword.h"
 #include "modify.h"
 #include "update.h"
 
@@ -26,9 +27,8 @@ ComputeCrushGsd::ComputeCrushGsd(LAMMPS *lmp, int &iarg, int narg, char **arg) :
   strcpy(fix_id_, arg[iarg]);
   iarg += 2;
   for (; iarg < narg && strcmp(arg[iarg], "dmax") != 0; iarg++) {
-    char *end = NULL;
-    const double s = strtod(arg[iarg], &end);
-    if (*end != '\0' || !(s > 0.0))
+    const double s = keyword_number(error, "compute crush/gsd", "sieves", arg[iarg], "sizes > 0 (m)");
+    if (!(s > 0.0))
       error->all(FLERR, (std::string("compute crush/gsd: keyword 'sieves' expects sizes > 0 (m), got '") +
                          arg[iarg] + "'").c_str());
     if (!sieves_.empty() && s <= sieves_.back())
@@ -36,8 +36,8 @@ ComputeCrushGsd::ComputeCrushGsd(LAMMPS *lmp, int &iarg, int narg, char **arg) :
     sieves_.push_back(s);
   }
   if (iarg < narg) {
-    char *end = NULL;
-    if (iarg + 2 != narg || !((dmax_ = strtod(arg[iarg + 1], &end)) > 0.0) || *end != '\0')
+    if (iarg + 2 != narg ||
+        !((dmax_ = keyword_number(error, "compute crush/gsd", "dmax", arg[iarg + 1], "one size > 0 (m)")) > 0.0))
       error->all(FLERR, "compute crush/gsd: keyword 'dmax' expects one size > 0 (m), last on the line");
     iarg += 2;
   }

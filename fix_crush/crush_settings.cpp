@@ -1,11 +1,11 @@
 /* Crushing model (plain C++): fix crush settings (see crush_settings.h). */
 #include "crush_settings.h"
 
-#include <cstdlib>
 #include <set>
 
 #include "crush_breakage_limit.h"
 #include "crush_model_error.h"
+#include "crush_number.h"
 
 namespace crush {
 
@@ -19,10 +19,7 @@ namespace {
 
 double number(const std::string &keyword, const std::string &text, const std::string &expected)
 {
-  char *end = nullptr;
-  const double value = std::strtod(text.c_str(), &end);
-  if (text.empty() || *end != '\0') fail(keyword, expected, text);
-  return value;
+  return keyword_number("fix crush", keyword, text, expected);
 }
 
 bool yes_no(const std::string &keyword, const std::string &text)
@@ -99,10 +96,12 @@ CrushSettings parse_crush_settings(const std::vector<std::string> &args)
       if (!(c.rayleigh_fraction > 0.0 && c.rayleigh_fraction <= 1.0)) fail(key, "a fraction in (0, 1]", val);
     } else if (key == "log") {
       c.log_file = val;
+    } else if (key == "check_tags") {
+      c.check_tags = yes_no(key, val);
     } else {
       throw ModelError("fix crush: unknown keyword '" + key +
                        "' (expected sigma_lim0, cv, weibull_m, d0, seed, scale, dmin, every, orientation, "
-                       "distribution, size_effect, layout, fines_dimension, rayleigh_fraction or log)");
+                       "distribution, size_effect, layout, fines_dimension, rayleigh_fraction, log or check_tags)");
     }
   }
   for (const char *required : {"sigma_lim0", "cv", "weibull_m", "d0", "seed"})

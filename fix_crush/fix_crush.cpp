@@ -346,11 +346,13 @@ void FixCrush::replace_mothers()
     error->all(FLERR, "fix crush: particle tags would exceed the largest 32-bit integer");
   log_events(pending_, static_cast<int>(first));
 
+  const std::vector<std::pair<std::size_t, int>> owned = owned_mothers();
+  const int nlocal_before = atom->nlocal;
   std::vector<int> mothers;
   double removed_local = 0.0, smallest = 0.0;
-  for (std::size_t k = 0; k < pending_.size(); k++) {
-    const int i = atom->map(static_cast<int>(pending_[k].tag));
-    if (i < 0 || i >= atom->nlocal) continue;  // owned by another processor
+  for (const auto &event : owned) {
+    const std::size_t k = event.first;
+    const int i = event.second;
     mothers.push_back(i);
     removed_local += create_fragments(i, static_cast<int>(first) + nfrag_ * static_cast<int>(k),
                                       static_cast<int>(pending_[k].generation) + 1);
@@ -359,10 +361,13 @@ void FixCrush::replace_mothers()
   }
   delete_mothers(mothers);
 
-  // Books: the volume that left the particles is the removed volume, nothing else.
-  double removed = 0.0;
-  MPI_Allreduce(&removed_local, &removed, 1, MPI_DOUBLE, MPI_SUM, world);
-  removed_volume_ += removed;
+  // Books: the volume that left the particles is the removed volume, nothing else; and every
+  // event replaced exactly once, counted on all processors (one reduction per event step).
+  double local_sums[3] = {removed_local, static_cast<double>(atom->nlocal - nlocal_before),
+                          static_cast<double>(owned.size())};
+  double sums[3];
+  MPI_Allreduce(local_sums, sums, 3, MPI_DOUBLE, MPI_SUM, world);
+  removed_volume_ += sums[0];
   double smallest_all = 0.0, big = smallest > 0.0 ? smallest : 1e300;
   MPI_Allreduce(&big, &smallest_all, 1, MPI_DOUBLE, MPI_MIN, world);
   if (smallest_all < 1e300)
@@ -370,6 +375,7 @@ void FixCrush::replace_mothers()
                                                                     : std::min(smallest_fragment_diameter_, smallest_all);
   events_total_ += pending_.size();
   particle_count_ += static_cast<double>(nfrag_ - 1) * pending_.size();
+  check_books(sums[1], sums[2]);
   next_tag_ = first + static_cast<double>(nfrag_) * pending_.size();
   atom->natoms += static_cast<bigint>(nfrag_ - 1) * static_cast<bigint>(pending_.size());
 
@@ -380,8 +386,55 @@ void FixCrush::replace_mothers()
   domain->pbc();
   domain->reset_box();
   if (irregular_->migrate_check()) irregular_->migrate_atoms();
+  if (settings_.check_tags) check_unique_tags();
 
   if (settings_.dmin <= 0.0) check_time_step(smallest_radius());
+}
+
+// The agreed events whose mother this processor owns, as (event, local index), all resolved before
+// the first fragment exists. create_atom() appends at nlocal, over the ghost slots, while the atom
+// map still points into them: once fragments are appended, a mother that is only a ghost here maps
+// to an index below the grown nlocal and would be taken as owned, and its fragments created twice.
+std::vector<std::pair<std::size_t, int>> FixCrush::owned_mothers() const
+{
+  std::vector<std::pair<std::size_t, int>> owned;
+  const int nlocal = atom->nlocal;
+  for (std::size_t k = 0; k < pending_.size(); k++) {
+    const int i = atom->map(static_cast<int>(pending_[k].tag));
+    if (i >= 0 && i < nlocal) owned.emplace_back(k, i);  // else a ghost, or owned by another processor
+  }
+  return owned;
+}
+
+// Always on: each event replaced by exactly one processor, and (fragments - 1) new particles per
+// event. A failure names both numbers and stops the run before a corrupted state is written.
+void FixCrush::check_books(double added, double replaced) const
+{
+  const double events = static_cast<double>(pending_.size());
+  if (replaced == events && added == (nfrag_ - 1) * events) return;
+  char msg[400];
+  snprintf(msg, sizeof(msg), "fix crush: at step " BIGINT_FORMAT " %.0f mothers were replaced and %.0f particles "
+           "added, the books require %.0f and %.0f: particles were lost or duplicated (please report this with "
+           "the deck)", update->ntimestep, replaced, added, events, (nfrag_ - 1) * events);
+  error->all(FLERR, msg);
+}
+
+// With 'check_tags yes' (tests): every tag in use exactly once over all processors.
+void FixCrush::check_unique_tags() const
+{
+  int maxtag = 0, maxtag_all = 0;
+  for (int i = 0; i < atom->nlocal; i++) maxtag = std::max(maxtag, atom->tag[i]);
+  MPI_Allreduce(&maxtag, &maxtag_all, 1, MPI_INT, MPI_MAX, world);
+  std::vector<int> seen(maxtag_all + 1, 0), seen_all(maxtag_all + 1, 0);
+  for (int i = 0; i < atom->nlocal; i++) seen[atom->tag[i]]++;
+  MPI_Allreduce(seen.data(), seen_all.data(), maxtag_all + 1, MPI_INT, MPI_SUM, world);
+  for (int t = 0; t <= maxtag_all; t++)
+    if (seen_all[t] > 1) {
+      char msg[200];
+      snprintf(msg, sizeof(msg), "fix crush (check_tags): tag %d is held by %d particles at step " BIGINT_FORMAT,
+               t, seen_all[t], update->ntimestep);
+      error->all(FLERR, msg);
+    }
 }
 
 // Appends the mother's fragments (the mother is deleted afterwards) and returns the volume they leave out (m^3).
@@ -517,14 +570,19 @@ double FixCrush::compute_vector(int n)
   return replace_seconds_;
 }
 
+// The pending events travel too: a restart written at the end of a step in which grains broke
+// continues with their replacement, as the uninterrupted run does.
 void FixCrush::write_restart(FILE *fp)
 {
-  double list[6] = {events_total_, removed_volume_, smallest_fragment_diameter_, initial_largest_diameter_,
-                    next_tag_, static_cast<double>(settings_.seed)};
+  const int width = sizeof(Event) / sizeof(double);
+  std::vector<double> list = {events_total_, removed_volume_, smallest_fragment_diameter_, initial_largest_diameter_,
+                              next_tag_, static_cast<double>(settings_.seed), static_cast<double>(pending_.size())};
+  const double *events = reinterpret_cast<const double *>(pending_.data());
+  list.insert(list.end(), events, events + width * pending_.size());
   if (comm->me == 0) {
-    int size = 6 * sizeof(double);
+    int size = static_cast<int>(list.size() * sizeof(double));
     fwrite(&size, sizeof(int), 1, fp);
-    fwrite(list, sizeof(double), 6, fp);
+    fwrite(list.data(), sizeof(double), list.size(), fp);
   }
 }
 
@@ -538,4 +596,8 @@ void FixCrush::restart(char *buf)
   next_tag_ = list[4];
   if (static_cast<std::uint64_t>(list[5]) != settings_.seed && comm->me == 0)
     error->warning(FLERR, "fix crush: the restart file was written with another 'seed'");
+  const std::size_t npending = static_cast<std::size_t>(list[6]);
+  pending_.resize(npending);
+  std::memcpy(pending_.data(), list + 7, npending * sizeof(Event));
+  if (npending > 0) next_reneighbor = update->ntimestep + 1;
 }

@@ -20,6 +20,7 @@ FixStyle(crush,FixCrush)
 #define LMP_FIX_CRUSH_H
 
 #include <cstdio>
+#include <utility>
 #include <vector>
 
 #include "crush_settings.h"
@@ -70,6 +71,9 @@ class FixCrush : public Fix {
   std::vector<Event> gather_events(const std::vector<int> &local_mothers);
   void log_events(const std::vector<Event> &events, int first_new_tag);
   void replace_mothers();
+  std::vector<std::pair<std::size_t, int>> owned_mothers() const;
+  void check_books(double added, double replaced) const;
+  void check_unique_tags() const;
   double create_fragments(int mother, int first_tag, int generation);
   void delete_mothers(std::vector<int> &mothers);
 

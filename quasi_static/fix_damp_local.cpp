@@ -8,7 +8,7 @@
 
 #include "atom.h"
 #include "error.h"
-#include "force.h"
+#include "input_keyword.h"
 #include "local_damping_law.h"
 #include "modify.h"
 
@@ -22,7 +22,7 @@ FixDampLocal::FixDampLocal(LAMMPS *lmp, int narg, char **arg) :
   while (iarg < narg) {
     if (strcmp(arg[iarg], "alpha") == 0) {
       if (iarg + 2 > narg) error->all(FLERR, "fix damp/local: keyword 'alpha' needs a value in [0, 1)");
-      alpha_ = force->numeric(FLERR, arg[iarg + 1]);
+      alpha_ = keyword_number(error, "fix damp/local", "alpha", arg[iarg + 1], "a value in [0, 1)");
       if (alpha_ < 0.0 || alpha_ >= 1.0)
         error->all(FLERR, "fix damp/local: 'alpha' must be in [0, 1) (PFC's default is 0.7, "
                           "quasi-static runs of the paper use 0.05)");

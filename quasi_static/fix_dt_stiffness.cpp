@@ -15,6 +15,7 @@
 #include "fix_crush_materials.h"
 #include "fix_wall_servo.h"
 #include "force.h"
+#include "input_keyword.h"
 #include "modify.h"
 #include "neigh_list.h"
 #include "neighbor.h"
@@ -38,7 +39,7 @@ FixDtStiffness::FixDtStiffness(LAMMPS *lmp, int narg, char **arg) :
   for (int iarg = 3; iarg < narg; iarg += 2) {
     const std::string key = arg[iarg];
     const bool has_value = iarg + 1 < narg;
-    const double value = has_value ? force->numeric(FLERR, arg[iarg + 1]) : 0.0;
+    const double value = has_value ? keyword_number(error, "fix dt/stiffness", key, arg[iarg + 1], "a number") : 0.0;
     if (key == "fraction") {
       expect(error, has_value && value > 0.0 && value <= 1.0, "keyword 'fraction' expects a value in (0, 1]");
       fraction_ = value;

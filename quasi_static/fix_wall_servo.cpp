@@ -16,6 +16,7 @@
 #include "error.h"
 #include "fix_crush_materials.h"
 #include "force.h"
+#include "input_keyword.h"
 #include "hertz_mindlin_scaled_law.h"
 #include "memory.h"
 #include "modify.h"
@@ -40,7 +41,8 @@ FixWallServo::FixWallServo(LAMMPS *lmp, int narg, char **arg) :
   next_report_(0.0), ramp_wall_start_(0.0), ramp_started_steps_(0.0), ramp_started_(false), monitor_(lmp)
 {
   expect(error, narg >= 9, "expected 'fix ID group wall/servo xlo xhi ylo yhi zlo zhi type T x MODE y MODE z MODE'");
-  for (int k = 0; k < 6; k++) wall_[k] = force->numeric(FLERR, arg[3 + k]);
+  const char *const wall_names[6] = {"xlo", "xhi", "ylo", "yhi", "zlo", "zhi"};
+  for (int k = 0; k < 6; k++) wall_[k] = keyword_number(error, "fix wall/servo", wall_names[k], arg[3 + k], "a position (m)");
   for (int a = 0; a < 3; a++) {
     expect(error, wall_[2 * a + 1] > wall_[2 * a], std::string("the ") + kAxis[a] + "hi wall must lie above the " +
                                                        kAxis[a] + "lo wall");
@@ -61,11 +63,12 @@ FixWallServo::FixWallServo(LAMMPS *lmp, int narg, char **arg) :
       parse_mode(key[0] - 'x', narg, arg, iarg);
     } else if (key == "ramp") {
       expect(error, iarg + 3 < narg, "keyword 'ramp' expects sigma_start sigma_max load_rate [sigma_ref]");
-      sigma_start_ = force->numeric(FLERR, arg[iarg + 1]);
-      sigma_max_ = force->numeric(FLERR, arg[iarg + 2]);
-      load_rate_ = force->numeric(FLERR, arg[iarg + 3]);
+      sigma_start_ = keyword_number(error, "fix wall/servo", "ramp", arg[iarg + 1], "sigma_start (Pa)");
+      sigma_max_ = keyword_number(error, "fix wall/servo", "ramp", arg[iarg + 2], "sigma_max (Pa)");
+      load_rate_ = keyword_number(error, "fix wall/servo", "ramp", arg[iarg + 3], "the load rate L_R");
       iarg += 4;
-      if (iarg < narg && isdigit(arg[iarg][0])) sigma_ref_ = force->numeric(FLERR, arg[iarg++]);
+      if (iarg < narg && isdigit(arg[iarg][0]))
+        sigma_ref_ = keyword_number(error, "fix wall/servo", "ramp", arg[iarg++], "sigma_ref (Pa)");
       expect(error, sigma_start_ > 0.0 && sigma_max_ >= sigma_start_,
              "keyword 'ramp' expects 0 < sigma_start <= sigma_max (Pa)");
       try {
@@ -75,17 +78,17 @@ FixWallServo::FixWallServo(LAMMPS *lmp, int narg, char **arg) :
       }
     } else if (key == "alpha") {
       expect(error, iarg + 1 < narg, "keyword 'alpha' expects a value in (0, 1]");
-      alpha_ = force->numeric(FLERR, arg[iarg + 1]);
+      alpha_ = keyword_number(error, "fix wall/servo", key, arg[iarg + 1], "a value in (0, 1]");
       expect(error, alpha_ > 0.0 && alpha_ <= 1.0, "keyword 'alpha' expects a value in (0, 1]");
       iarg += 2;
     } else if (key == "max_step") {
       expect(error, iarg + 1 < narg, "keyword 'max_step' expects a length > 0 (m)");
-      max_step_ = force->numeric(FLERR, arg[iarg + 1]);
+      max_step_ = keyword_number(error, "fix wall/servo", key, arg[iarg + 1], "a length > 0 (m)");
       expect(error, max_step_ > 0.0, "keyword 'max_step' expects a length > 0 (m)");
       iarg += 2;
     } else if (key == "progress") {
       expect(error, iarg + 1 < narg, "keyword 'progress' expects a percentage in (0, 100]");
-      progress_percent_ = force->numeric(FLERR, arg[iarg + 1]);
+      progress_percent_ = keyword_number(error, "fix wall/servo", key, arg[iarg + 1], "a percentage in (0, 100]");
       expect(error, progress_percent_ > 0.0 && progress_percent_ <= 100.0,
              "keyword 'progress' expects a percentage in (0, 100]");
       iarg += 2;
@@ -127,7 +130,8 @@ void FixWallServo::parse_mode(int axis, int narg, char **arg, int &iarg)
   } else if (mode == "stress" || mode == "velocity") {
     expect(error, iarg + 2 < narg, "keyword '" + name + " " + mode + "' expects a value");
     mode_[axis] = mode == "stress" ? STRESS : VELOCITY;
-    value_[axis] = force->numeric(FLERR, arg[iarg + 2]);
+    value_[axis] = keyword_number(error, "fix wall/servo", name + " " + mode, arg[iarg + 2],
+                                  mode == "stress" ? "a stress > 0 (Pa)" : "a velocity (m/s)");
     expect(error, mode == "velocity" || value_[axis] > 0.0, "keyword '" + name + " stress' expects a stress > 0 (Pa)");
     iarg += 3;
   } else {

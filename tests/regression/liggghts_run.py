@@ -23,9 +23,6 @@ def run_deck(liggghts, deck, workdir, variables=None, ranks=1, expect_fail=False
     cmd = [liggghts, "-in", os.path.basename(deck), "-log", "log.liggghts"]
     for name, value in (variables or {}).items():
         cmd += ["-var", name, str(value)]
-    # error->one() aborts without flushing stdout: line-buffer it so its message is not lost.
-    if shutil.which("stdbuf"):
-        cmd = ["stdbuf", "-oL"] + cmd
     if ranks > 1:
         cmd = ["mpiexec", "-n", str(ranks), "--oversubscribe"] + cmd
         os.environ.setdefault("OMPI_ALLOW_RUN_AS_ROOT", "1")
@@ -40,6 +37,22 @@ def run_deck(liggghts, deck, workdir, variables=None, ranks=1, expect_fail=False
         raise AssertionError("liggghts failed on %s (exit %d):\n%s" % (deck, proc.returncode,
                                                                       proc.stdout[-3000:]))
     return proc.stdout
+
+
+def edited_deck(deck, folder, replacements):
+    """Copies the deck's folder to folder (afresh) with each (old, new) text replaced in the deck;
+    returns the copied deck's path. A replacement whose text is not in the deck is a test error."""
+    if os.path.isdir(folder):
+        shutil.rmtree(folder)
+    shutil.copytree(os.path.dirname(os.path.abspath(deck)), folder)
+    path = os.path.join(folder, os.path.basename(deck))
+    text = open(path).read()
+    for old, new in replacements:
+        if old not in text:
+            raise AssertionError("test setup: '%s' not in %s" % (old, deck))
+        text = text.replace(old, new)
+    open(path, "w").write(text)
+    return path
 
 
 def printed(output, key):

@@ -217,6 +217,10 @@ def case_bad_input(liggghts, work):
         ("time step", "timestep        1e-8\n", "timestep        5e-8\n", "exceeds"),
         ("gsd without fix", "compute         gsd all crush/gsd crush", "compute         gsd all crush/gsd nofix",
          "'nofix' is not the ID of a fix crush"),
+        ("infinite strength", "sigma_lim0 2e8", "sigma_lim0 inf", "fix crush: keyword 'sigma_lim0' expects"),
+        ("overflowing dmin", "dmin 0.0001", "dmin 1e999", "fix crush: keyword 'dmin' expects"),
+        ("nan damping", "damp/local alpha 0.1", "damp/local alpha nan", "fix damp/local: keyword 'alpha' expects"),
+        ("nan sieve", "sieves 0.00005", "sieves nan", "compute crush/gsd: keyword 'sieves' expects"),
     ]
     pair_case = ("pair style", "pair_style      gran model hertz/scaled tangential mindlin/scaled",
                  "pair_style      gran model hertz tangential history", "hertz/scaled")

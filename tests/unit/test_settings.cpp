@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "crush_model_error.h"
+#include "crush_number.h"
 #include "crush_settings.h"
 
 using namespace crush;
@@ -92,4 +93,42 @@ TEST(CrushSettings, ErrorsNameTheKeywordAndTheExpectedValue)
   EXPECT_NE(error_of(with({"seed", "-5"})).find("'seed' expects a positive integer"), std::string::npos);
   EXPECT_NE(error_of(with({"speed", "3"})).find("unknown keyword 'speed'"), std::string::npos);
   EXPECT_NE(error_of(with({"log"})).find("'log' expects a value"), std::string::npos);
+}
+
+// Every numeric keyword rejects what strtod alone would take: inf, nan, overflow, trailing text.
+TEST(CrushSettings, NumbersMustBeFinite)
+{
+  for (const char *key : {"sigma_lim0", "cv", "weibull_m", "d0", "seed", "scale", "dmin", "every", "fines_dimension",
+                          "rayleigh_fraction"})
+    for (const char *bad : {"inf", "-inf", "nan", "1e999", "5x"}) {
+      const std::string message = error_of(with({key, bad}));
+      EXPECT_NE(message.find(std::string("fix crush: keyword '") + key + "' expects"), std::string::npos)
+          << key << " " << bad << ": " << message;
+      EXPECT_NE(message.find(std::string("got '") + bad + "'"), std::string::npos) << key << " " << bad;
+    }
+}
+
+TEST(CrushSettings, CheckTagsIsASwitch)
+{
+  EXPECT_FALSE(parse_crush_settings(required).check_tags);
+  EXPECT_TRUE(parse_crush_settings(with({"check_tags", "yes"})).check_tags);
+  EXPECT_NE(error_of(with({"check_tags", "1"})).find("'check_tags' expects 'yes' or 'no'"), std::string::npos);
+}
+
+TEST(KeywordNumber, AcceptsFiniteNumbersOnly)
+{
+  double v = 0.0;
+  EXPECT_TRUE(parse_finite("2.5e-3", v));
+  EXPECT_EQ(v, 2.5e-3);
+  EXPECT_TRUE(parse_finite("-7", v));
+  EXPECT_EQ(v, -7.0);
+  for (const char *bad : {"", "inf", "INF", "-Infinity", "nan", "NaN", "1e400", "-1e400", "3 ", "0x", "e5"})
+    EXPECT_FALSE(parse_finite(bad, v)) << bad;
+  EXPECT_EQ(v, -7.0);  // untouched by a rejected text
+  try {
+    keyword_number("fix damp/local", "alpha", "nan", "a value in [0, 1)");
+    FAIL() << "nan accepted";
+  } catch (const ModelError &e) {
+    EXPECT_STREQ(e.what(), "fix damp/local: keyword 'alpha' expects a value in [0, 1), got 'nan'");
+  }
 }

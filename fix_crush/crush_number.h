@@ -1,0 +1,22 @@
+/* Crushing model (plain C++): the one reader of numbers given to the plugin's commands.
+
+   A keyword's value is accepted only when the whole text is a finite number: strtod alone would
+   take "inf", "nan", "1e999" (overflow to inf) and "5x" (trailing text). */
+#ifndef CRUSH_NUMBER_H
+#define CRUSH_NUMBER_H
+
+#include <string>
+
+namespace crush {
+
+// True, with value set, where text is a finite number in full.
+bool parse_finite(const std::string &text, double &value);
+
+// The value of keyword 'keyword' of 'command', or ModelError
+// "<command>: keyword '<keyword>' expects <expected>, got '<text>'" where text is not a finite number.
+double keyword_number(const std::string &command, const std::string &keyword, const std::string &text,
+                      const std::string &expected);
+
+}  // namespace crush
+
+#endif

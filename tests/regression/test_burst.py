@@ -1,0 +1,141 @@
+#!/usr/bin/env python3
+"""Bursts: many grains breaking in one step, on periodic and processor boundaries, on any number of
+ranks, and a restart written with the replacement still pending (tests/regression/burst/).
+
+  python3 test_burst.py LIGGGHTS WORKDIR CASE RANKS     CASE: all, half or restart
+
+Every case asserts: every tag unique, particles = initial + 13 x events at every thermo row, the
+volume books to 1e-12, no broken grain left, and the events of the burst step exactly those the
+deck implies (which grains, and their fragment tags), whatever the number of ranks.
+"""
+import math
+import os
+import shutil
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from liggghts_run import check, read_dump, read_thermo, run_deck  # noqa: E402
+
+BURST = os.path.join(os.path.dirname(os.path.abspath(__file__)), "burst")
+CELLS = 12              # grains per box edge: 1728 grains
+SPACING = 0.21e-3       # m, lattice spacing and box = CELLS x SPACING
+DIAMETER = 0.2121e-3    # m: 1% overlap with each neighbour
+FRAGMENTS = 14
+
+
+def grain_type(i, j, k):
+    """Type 2 (breakable in case 'half') for about half the grains, scattered by a fixed hash."""
+    return 2 if ((i * 7919 + j * 104729 + k * 1299709) * 2654435761 >> 7) % 2 else 1
+
+
+def write_data(path):
+    """The lattice, tagged in a fixed order (x fastest), so that tags do not depend on the ranks."""
+    box = CELLS * SPACING
+    lines = ["LIGGGHTS data file: burst lattice, %d grains" % CELLS ** 3, "",
+             "%d atoms" % CELLS ** 3, "2 atom types", "",
+             "0 %.17g xlo xhi" % box, "0 %.17g ylo yhi" % box, "0 %.17g zlo zhi" % box, "", "Atoms", ""]
+    tag = 0
+    types = {}
+    for k in range(CELLS):
+        for j in range(CELLS):
+            for i in range(CELLS):
+                tag += 1
+                types[tag] = grain_type(i, j, k)
+                lines.append("%d %d %.17g 2650 %.17g %.17g %.17g" % (tag, types[tag], DIAMETER, i * SPACING,
+                                                                      j * SPACING, k * SPACING))
+    with open(path, "w") as f:
+        f.write("\n".join(lines) + "\n")
+    return types
+
+
+def read_events(path):
+    with open(path) as f:
+        lines = f.read().splitlines()
+    header = lines[0].split(",")
+    return [dict(zip(header, line.split(","))) for line in lines[1:]]
+
+
+def run_burst(liggghts, deck, work, case, ranks, extra=None):
+    """Runs a burst deck in work, with burst.data (and any extra files) beside it."""
+    if os.path.isdir(work):
+        shutil.rmtree(work)
+    os.makedirs(work)
+    types = write_data(os.path.join(work, "burst.data"))
+    for name in extra or []:
+        shutil.copy(name, work)
+    run_deck(liggghts, os.path.join(BURST, deck), work, {"case": case, "log": "events.csv", "out": "final.dump"},
+             ranks=ranks, keep=True)
+    return types
+
+
+def check_run(work, case, ranks, types, thermo_from_restart=False):
+    """The invariants of a finished burst run in work."""
+    n0 = CELLS ** 3
+    thermo = read_thermo(os.path.join(work, "log.liggghts"))
+    v0 = n0 * math.pi / 6 * DIAMETER ** 3
+    for row in thermo:
+        if any(v != v for v in row.values()):
+            raise AssertionError("NaN at step %d" % row["Step"])
+        if row["Atoms"] != n0 + 13 * row["crush[1]"]:
+            raise AssertionError("step %d: %d particles, %d events" % (row["Step"], row["Atoms"], row["crush[1]"]))
+        if abs(row["gsd"] - v0) > 1e-12 * v0:
+            raise AssertionError("step %d: solid volume %.17g, initially %.17g" % (row["Step"], row["gsd"], v0))
+    breakable = sorted(t for t, ty in types.items() if case == "all" or ty == 2)
+    events = thermo[-1]["crush[1]"]
+    check(events == len(breakable), "%s on %d rank(s): %d events, one per breakable grain"
+          % (case, ranks, events))
+    check(True, "every thermo row (%d, from step %d): particles = %d + 13 x events, particle + removed volume = "
+          "initial (1e-12), no NaN" % (len(thermo), thermo[0]["Step"], n0))
+    log = read_events(os.path.join(work, "events.csv"))
+    check([int(e["tag"]) for e in log] == breakable and all(e["step"] == "1" for e in log),
+          "the burst step (1) breaks exactly the %d breakable grains, in tag order" % len(breakable))
+    expected = [[str(n0 + 1 + FRAGMENTS * k + f) for f in range(FRAGMENTS)] for k in range(len(breakable))]
+    check([[e["fragment_%d" % (f + 1)] for f in range(FRAGMENTS)] for e in log] == expected,
+          "their fragment tags are %d + 14 k + (0..13), as on any number of ranks" % (n0 + 1))
+    final = read_dump(os.path.join(work, "final.dump"))[-1][2]
+    tags = [int(r["id"]) for r in final]
+    check(len(tags) == len(set(tags)) == thermo[-1]["Atoms"], "%d particles, every tag unique" % len(tags))
+    check(not set(breakable) & set(tags), "no broken grain left")
+    check(sum(1 for r in final if r["f_crush[2]"] == 1) == FRAGMENTS * len(breakable),
+          "%d first-generation fragments" % (FRAGMENTS * len(breakable)))
+    volume = sum(math.pi / 6 * (2 * r["radius"]) ** 3 for r in final)
+    check(abs(volume + thermo[-1]["crush[2]"] - v0) / v0 < 1e-12, "final books balance to 1e-12")
+    if ranks > 1:
+        # Grains within a radius of a processor boundary (x = L/2 on 2 and 4 ranks, L/3 and 2L/3 on 3)
+        # have fragments on both sides: they migrate in the step they are born.
+        box = CELLS * SPACING
+        planes = [box / 3, 2 * box / 3] if ranks == 3 else [box / 2]
+        on_boundary = [e for e in log if min(abs(float(e["x"]) - p) for p in planes) < DIAMETER / 2]
+        check(len(on_boundary) > 0, "%d mothers straddle a processor boundary" % len(on_boundary))
+    return log, final
+
+
+def case_burst(liggghts, work, case, ranks):
+    types = run_burst(liggghts, "in.burst", work, case, ranks)
+    check_run(work, case, ranks, types)
+
+
+def case_restart(liggghts, work, ranks):
+    """in.burst writes burst.restart right after the burst step (replacement pending) and goes on;
+    in.burst_restart continues from the file: the same events, fragment tags and final particles."""
+    first = os.path.join(work, "uninterrupted")
+    types = run_burst(liggghts, "in.burst", first, "half", ranks)
+    log, final = check_run(first, "half", ranks, types)
+    second = os.path.join(work, "continued")
+    run_burst(liggghts, "in.burst_restart", second, "half", ranks, [os.path.join(first, "burst.restart")])
+    log2, final2 = check_run(second, "half", ranks, types)
+    check(log2 == log, "the continued run logs the same %d events (step, tags, positions, fragments)" % len(log))
+    same = len(final) == len(final2) and all(
+        a["id"] == b["id"] and max(abs(a[k] - b[k]) for k in "xyz") < 1e-9 for a, b in zip(final, final2))
+    check(same, "the same %d particles at the end, positions within 1 nm" % len(final))
+
+
+if __name__ == "__main__":
+    liggghts, workdir, case, ranks = sys.argv[1:5]
+    os.makedirs(workdir, exist_ok=True)
+    liggghts, workdir, ranks = os.path.abspath(liggghts), os.path.abspath(workdir), int(ranks)
+    if case == "restart":
+        case_restart(liggghts, workdir, ranks)
+    else:
+        case_burst(liggghts, workdir, case, ranks)
+    print("PASSED burst %s on %d rank(s)" % (case, ranks))
