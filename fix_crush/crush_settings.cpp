@@ -79,9 +79,10 @@ CrushSettings parse_crush_settings(const std::vector<std::string> &args)
     } else if (key == "distribution") {
       if (val == "normal") c.distribution = StrengthDistribution::normal;
       else if (val == "normal_clipped") c.distribution = StrengthDistribution::normal_clipped;
+      else if (val == "normal_clipped_originals") c.distribution = StrengthDistribution::normal_clipped_originals;
       else if (val == "weibull") c.distribution = StrengthDistribution::weibull;
       else if (val == "constant") c.distribution = StrengthDistribution::constant;
-      else fail(key, "'normal', 'normal_clipped', 'weibull' or 'constant'", val);
+      else fail(key, "'normal', 'normal_clipped', 'normal_clipped_originals', 'weibull' or 'constant'", val);
     } else if (key == "size_effect") {
       c.size_effect = yes_no(key, val);
     } else if (key == "layout") {

@@ -19,11 +19,13 @@ StrengthDraw::StrengthDraw(StrengthDistribution distribution, double sigma_lim0,
   require(weibull_m > 0.0, "weibull_m", weibull_m, "> 0");
 }
 
-double StrengthDraw::draw(std::uint64_t tag) const
+double StrengthDraw::draw(std::uint64_t tag, int generation) const
 {
   switch (distribution_) {
     case StrengthDistribution::normal: return draw_normal(tag);
     case StrengthDistribution::normal_clipped: return draw_normal_clipped(tag);
+    case StrengthDistribution::normal_clipped_originals:
+      return generation == 0 ? draw_normal_clipped(tag) : draw_normal(tag);
     case StrengthDistribution::weibull: return draw_weibull(tag);
     case StrengthDistribution::constant: break;
   }
@@ -67,7 +69,8 @@ double StrengthDraw::mean() const
 {
   if (distribution_ == StrengthDistribution::normal)
     return truncated_normal_mean(sigma_lim0_, cv_ * sigma_lim0_);
-  if (distribution_ == StrengthDistribution::normal_clipped)
+  if (distribution_ == StrengthDistribution::normal_clipped ||
+      distribution_ == StrengthDistribution::normal_clipped_originals)
     return clipped_normal_mean(sigma_lim0_, cv_ * sigma_lim0_);
   return sigma_lim0_;
 }
@@ -76,7 +79,8 @@ double StrengthDraw::cv() const
 {
   switch (distribution_) {
     case StrengthDistribution::normal: return truncated_normal_cv(sigma_lim0_, cv_ * sigma_lim0_);
-    case StrengthDistribution::normal_clipped: return clipped_normal_cv(sigma_lim0_, cv_ * sigma_lim0_);
+    case StrengthDistribution::normal_clipped:
+    case StrengthDistribution::normal_clipped_originals: return clipped_normal_cv(sigma_lim0_, cv_ * sigma_lim0_);
     case StrengthDistribution::weibull: {
       const double g1 = std::tgamma(1.0 + 1.0 / weibull_m_);
       const double g2 = std::tgamma(1.0 + 2.0 / weibull_m_);

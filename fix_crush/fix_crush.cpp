@@ -196,7 +196,8 @@ void FixCrush::draw_missing_strengths()
   const double *radius = atom->radius;
   for (int i = 0; i < atom->nlocal; i++)
     if (data[i][STRENGTH] < 0.0)
-      data[i][STRENGTH] = settings_.size_scaled(strength_.draw(tag[i]), 2.0 * radius[i]);
+      data[i][STRENGTH] = settings_.size_scaled(strength_.draw(tag[i], static_cast<int>(data[i][GENERATION])),
+                                                2.0 * radius[i]);
 }
 
 void FixCrush::setup_pre_force(int vflag)
@@ -476,7 +477,7 @@ double FixCrush::create_fragments(int mother, int first_tag, int generation)
     for (int m = 0; m < modify->nfix; m++)
       if (modify->fix[m]->create_attribute) modify->fix[m]->set_arrays(n);
     double *data = fix_data_->array_atom[n];
-    data[STRENGTH] = settings_.size_scaled(strength_.draw(atom->tag[n]), 2.0 * r);
+    data[STRENGTH] = settings_.size_scaled(strength_.draw(atom->tag[n], generation), 2.0 * r);
     data[GENERATION] = generation;
     data[RATIO] = 0.0;
   }

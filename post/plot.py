@@ -10,7 +10,9 @@ folders (or given as files) and writes PNGs to --out (default: the current folde
   fig5_isotropic.png     n against mean stress p', GSD at 100 MPa (Fig. 5a-b)
   fig6_stress_paths.png  q - p' paths and I_G against p' (Fig. 6)
   fig_crushing.png       crushing events and particles against the controlling stress
-Only the figures for which runs were given are drawn. Stresses are plotted in MPa.
+  fig_gsd_evolution.png  GSD at 1, 10, 50 and 100 MPa for every N, downscaled (gsd_<O|I><N>_<s>MPa.csv)
+Triaxial curves are labelled with their folder's name, so that runs of one sample with different
+settings (e.g. -var rotation 0 and 1) can be drawn together. Only the figures for which runs were given are drawn. Stresses are plotted in MPa.
 """
 import argparse
 import csv
@@ -27,6 +29,8 @@ import matplotlib.pyplot as plt  # noqa: E402
 RUN_NAME = re.compile(r"history_([OI])([0-9.]+)\.csv$")
 TRIAXIAL_NAME = re.compile(r"history_T([a-z]+)([0-9.]+)\.csv$")
 GSD_NAME = re.compile(r"gsd_([OI])([0-9.]+)_100MPa\.csv$")
+GSD_LEVEL_NAME = re.compile(r"gsd_([OI])([0-9.]+)_([0-9]+)MPa\.csv$")
+LEVEL_COLOUR = {"1": "tab:blue", "10": "tab:green", "50": "tab:orange", "100": "tab:red"}
 STYLE = {"1": "-", "1.5": "--", "2": ":"}
 
 
@@ -39,18 +43,25 @@ def read_csv(path, skip=()):
 
 
 def collect(paths):
-    """Every history, triaxial history and 100 MPa GSD file under the given folders or files."""
+    """Every history, triaxial history (keyed by sample, N and folder) and GSD file (100 MPa, and by
+    stress level) under the given folders or files."""
     files = []
     for p in paths:
         files += sorted(glob.glob(os.path.join(p, "*.csv"))) if os.path.isdir(p) else [p]
-    runs, triaxial, gsd = {}, {}, {}
+    runs, triaxial, gsd, levels = {}, {}, {}, {}
     for f in files:
         name = os.path.basename(f)
-        for pattern, table in ((RUN_NAME, runs), (TRIAXIAL_NAME, triaxial), (GSD_NAME, gsd)):
+        for pattern, table in ((RUN_NAME, runs), (GSD_NAME, gsd)):
             m = pattern.search(name)
             if m:
                 table[(m.group(1), m.group(2))] = read_csv(f)
-    return runs, triaxial, gsd
+        m = TRIAXIAL_NAME.search(name)
+        if m:
+            triaxial[(m.group(1), m.group(2), os.path.basename(os.path.dirname(os.path.abspath(f))))] = read_csv(f)
+        m = GSD_LEVEL_NAME.search(name)
+        if m:
+            levels[(m.group(1), m.group(2), m.group(3))] = read_csv(f)
+    return runs, triaxial, gsd, levels
 
 
 def label(test, n):
@@ -143,8 +154,8 @@ def figure_triaxial(triaxial, out):
     if not triaxial:
         return None
     fig, axes = plt.subplots(1, 2, figsize=(10, 4.5))
-    for (sample, n), h in sorted(triaxial.items()):
-        name = "%s, N = %s" % (sample, n)
+    for (sample, n, folder), h in sorted(triaxial.items()):
+        name = "%s, N = %s (%s)" % (sample, n, folder)
         axes[0].plot([100 * e for e in h["axial_strain"]], mpa(h["q"]), label=name)
         axes[1].plot([100 * e for e in h["axial_strain"]], [100 * e for e in h["volumetric_strain"]], label=name)
     axes[0].set_ylabel("deviatoric stress q (MPa)")
@@ -154,6 +165,25 @@ def figure_triaxial(triaxial, out):
         ax.legend()
     fig.suptitle("Drained triaxial compression (Fig. 3a)")
     return save(fig, out, "fig3a_triaxial.png")
+
+
+def figure_gsd_evolution(levels, out):
+    """The grading evolving: GSD at each output stress (colour) for each N (line style), downscaled."""
+    tests = sorted({t for t, _, _ in levels})
+    if not tests:
+        return None
+    fig, axes = plt.subplots(1, len(tests), figsize=(6.5 * len(tests), 4.8), squeeze=False)
+    for ax, test in zip(axes[0], tests):
+        for (t, n, level), g in sorted(levels.items(), key=lambda item: (item[0][1], float(item[0][2]))):
+            if t == test:
+                ax.semilogx(g["size_mm"], g["percent_passing"], STYLE.get(n, "-"), color=LEVEL_COLOUR.get(level),
+                            label="%s, %s MPa" % (label(t, n), level))
+        ax.set_xlabel("particle size / N (mm)")
+        ax.set_ylabel("percent passing by mass")
+        ax.set_title({"O": "one-dimensional", "I": "isotropic"}[test] + " compression")
+        ax.legend(fontsize=7, ncol=2)
+    fig.suptitle("Grading at 1, 10, 50 and 100 MPa, every scale factor (downscaled)")
+    return save(fig, out, "fig_gsd_evolution.png")
 
 
 def save(fig, out, name):
@@ -169,13 +199,13 @@ def main(argv):
     parser.add_argument("--out", default=".", help="folder for the PNGs (default: .)")
     parser.add_argument("inputs", nargs="+", help="run folders or CSV files")
     args = parser.parse_args(argv)
-    runs, triaxial, gsd = collect(args.inputs)
+    runs, triaxial, gsd, levels = collect(args.inputs)
     if not (runs or triaxial):
         sys.exit("post/plot.py: no history_<O|I|T...><N>.csv among " + " ".join(args.inputs))
     os.makedirs(args.out, exist_ok=True)
     written = [figure_triaxial(triaxial, args.out), figure_oedometric(runs, gsd, args.out),
                figure_isotropic(runs, gsd, args.out), figure_stress_paths(runs, args.out),
-               figure_crushing(runs, args.out)]
+               figure_crushing(runs, args.out), figure_gsd_evolution(levels, args.out)]
     for path in written:
         if path:
             print("wrote " + path)

@@ -2,7 +2,9 @@
 # The full Fontainebleau runs of doc/results.md: O-N and I-N to 100 MPa for N = 2, 1.5, 1, and the
 # dense and loose triaxial tests at 100 kPa, each on RANKS MPI ranks (default 2), then the figures.
 #   bash scripts/fontainebleau_runs.sh [OUT_DIR (default runs/fontainebleau)] [tests...]
-#   tests: O2 O1.5 O1 I2 I1.5 I1 Tdense Tloose (default: all)
+#   tests: O2 O1.5 O1 I2 I1.5 I1 Tdense Tloose (default: all); TEST:SEED runs it with another seed
+#   (sample and strengths), e.g. O2:179424673 (a prime that differs from the decks' template seeds), into OUT_DIR/TEST_sSEED
+# Environment: RANKS (2), LIGGGHTS (build/liggghts).
 # Writes OUT_DIR/<test>/ (the deck's outputs and log), OUT_DIR/runtimes.csv (test, ranks, initial and
 # final particles, events, wall-clock seconds) and OUT_DIR/figures/*.png (post/plot.py).
 set -euo pipefail
@@ -14,7 +16,11 @@ ranks=${RANKS:-2}
 liggghts=${LIGGGHTS:-$here/build/liggghts}
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
 [ -f "$out/runtimes.csv" ] || echo "test,ranks,initial_particles,final_particles,events,seconds" > "$out/runtimes.csv"
-for t in $tests; do
+for spec in $tests; do
+  t=${spec%%:*}
+  seed_vars=()
+  dir=$out/$t
+  if [ "$spec" != "$t" ]; then seed_vars=(-var seed "${spec#*:}"); dir=$out/${t}_s${spec#*:}; fi
   case $t in
     O*) deck=in.oedometer; vars=(-var N "${t#O}") ;;
     I*) deck=in.isotropic; vars=(-var N "${t#I}") ;;
@@ -22,9 +28,9 @@ for t in $tests; do
     Tloose) deck=in.triaxial; vars=(-var sample loose -var mu_prep 0.5) ;;
     *) echo "unknown test $t (O2 O1.5 O1 I2 I1.5 I1 Tdense Tloose)" >&2; exit 2 ;;
   esac
-  dir=$out/$t
+  vars+=("${seed_vars[@]}")
   rm -rf "$dir" && mkdir -p "$dir" && cp "$here"/examples/fontainebleau/in.* "$dir"/
-  echo "== $t: mpirun -np $ranks liggghts -in $deck ${vars[*]}"
+  echo "== $spec: mpirun -np $ranks liggghts -in $deck ${vars[*]}"
   start=$(date +%s%N)
   (cd "$dir" && mpirun -np "$ranks" "$liggghts" -in "$deck" "${vars[@]}" -log log.liggghts > screen.txt 2>&1)
   seconds=$(awk -v a="$start" -v b="$(date +%s%N)" 'BEGIN {printf "%.1f", (b - a) / 1e9}')
@@ -32,7 +38,7 @@ for t in $tests; do
   initial=$(sed -n 's/^SAMPLE N = [^:]*: \([0-9]*\) particles.*/\1/p' "$dir/screen.txt")
   events=$(($(cat "$dir"/events_*.csv | wc -l) - 1))
   final=$((initial + 13 * events))
-  echo "$t,$ranks,$initial,$final,$events,$seconds" >> "$out/runtimes.csv"
+  echo "$spec,$ranks,$initial,$final,$events,$seconds" >> "$out/runtimes.csv"
   echo "   $seconds s"
 done
 /usr/bin/python3 "$here/post/plot.py" --out "$out/figures" "$out"/*/

@@ -41,14 +41,21 @@ CASES = {
         "reference": "restart_mid_crushing",
         "thermo": False,
     },
+    # The truncated draw for every particle (fix crush's own default).
     "fontainebleau_oedometer_short": {
         "deck": os.path.join(ROOT, "examples", "fontainebleau", "in.oedometer"),
-        "vars": {"sigma_max": 3e6},
+        "vars": {"sigma_max": 3e6, "distribution": "normal"},
         "dump": None,
     },
     "fontainebleau_isotropic_short": {
         "deck": os.path.join(ROOT, "examples", "fontainebleau", "in.isotropic"),
-        "vars": {"sigma_max": 3e6},
+        "vars": {"sigma_max": 3e6, "distribution": "normal"},
+        "dump": None,
+    },
+    # The decks' default, Table 3's reading: original grains clipped, fragments truncated.
+    "fontainebleau_oedometer_clipped_originals": {
+        "deck": os.path.join(ROOT, "examples", "fontainebleau", "in.oedometer"),
+        "vars": {"sigma_max": 1e6},
         "dump": None,
     },
     "contact_wall_servo": {

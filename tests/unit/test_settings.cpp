@@ -86,7 +86,7 @@ TEST(CrushSettings, ErrorsNameTheKeywordAndTheExpectedValue)
   EXPECT_NE(error_of(with({"dmin", "-1"})).find("'dmin'"), std::string::npos);
   EXPECT_NE(error_of(with({"every", "1.5"})).find("'every' expects an integer >= 1"), std::string::npos);
   EXPECT_NE(error_of(with({"orientation", "up"})).find("'random' or 'fixed'"), std::string::npos);
-  EXPECT_NE(error_of(with({"distribution", "lognormal"})).find("'normal', 'normal_clipped', 'weibull' or 'constant'"),
+  EXPECT_NE(error_of(with({"distribution", "lognormal"})).find("'normal', 'normal_clipped', 'normal_clipped_originals', 'weibull' or 'constant'"),
             std::string::npos);
   EXPECT_NE(error_of(with({"size_effect", "maybe"})).find("'yes' or 'no'"), std::string::npos);
   EXPECT_NE(error_of(with({"fines_dimension", "3"})).find("'fines_dimension'"), std::string::npos);

@@ -148,3 +148,24 @@ TEST(StrengthDraw, InvalidInputNamesTheParameter)
     EXPECT_NE(std::string(e.what()).find("cv"), std::string::npos);
   }
 }
+
+TEST(StrengthDraw, ClippedOriginalsTruncatedFragments)
+{
+  // Table 3's reading: original grains draw the clipped normal (zero one time in six for CV = 1),
+  // fragments the truncated normal (never zero), each the same draw as the plain distribution.
+  const StrengthDraw mixed(StrengthDistribution::normal_clipped_originals, 5e9, 1.0, 10.0, 1234567);
+  const StrengthDraw clipped(StrengthDistribution::normal_clipped, 5e9, 1.0, 10.0, 1234567);
+  const StrengthDraw truncated(StrengthDistribution::normal, 5e9, 1.0, 10.0, 1234567);
+  int zeros = 0, fragment_zeros = 0;
+  for (std::uint64_t tag = 1; tag <= 100000; ++tag) {
+    const double original = mixed.draw(tag, 0), fragment = mixed.draw(tag, 1);
+    ASSERT_EQ(original, clipped.draw(tag));
+    ASSERT_EQ(fragment, truncated.draw(tag));
+    ASSERT_EQ(mixed.draw(tag, 3), fragment);
+    zeros += original == 0.0;
+    fragment_zeros += fragment <= 0.0;
+  }
+  EXPECT_NEAR(zeros / 1e5, 0.158655, 0.004);
+  EXPECT_EQ(fragment_zeros, 0);
+  EXPECT_EQ(mixed.mean(), clipped.mean());
+}
