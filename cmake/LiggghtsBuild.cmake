@@ -20,6 +20,26 @@ foreach(_f IN LISTS _plugin_files)
   endif()
 endforeach()
 
+# Plugin files that an earlier configuration synchronised and that have since been renamed or deleted:
+# remove them from the copy, or the glob below would compile them as LIGGGHTS' own (duplicate symbols).
+set(_manifest "${LIGGGHTS_SRC}/.liggghts-crush-plugin-files")
+set(_names "")
+foreach(_f IN LISTS _plugin_files)
+  get_filename_component(_name "${_f}" NAME)
+  list(APPEND _names "${_name}")
+endforeach()
+if(EXISTS "${_manifest}")
+  file(STRINGS "${_manifest}" _previous)
+  foreach(_name IN LISTS _previous)
+    if(NOT _name IN_LIST _names)
+      message(STATUS "liggghts-crush: removing ${_name}, no longer a plugin file, from the LIGGGHTS copy")
+      file(REMOVE "${LIGGGHTS_SRC}/${_name}")
+    endif()
+  endforeach()
+endif()
+string(REPLACE ";" "\n" _manifest_text "${_names}")
+file(WRITE "${_manifest}" "${_manifest_text}\n")
+
 # Upstream sources: everything in the copy except our own files (they are synchronised at build time).
 file(GLOB _upstream_sources "${LIGGGHTS_SRC}/*.cpp")
 if(_plugin_sources)

@@ -11,40 +11,36 @@
 #ifndef CRUSH_BREAKAGE_LIMIT_H
 #define CRUSH_BREAKAGE_LIMIT_H
 
+#include <cmath>
+
+#include "crush_constants.h"
+#include "hertz_mindlin_contact_load.h"
+
 namespace crush {
 
-// Elastic constants of one body: Young's modulus E (Pa) and Poisson's ratio nu.
-struct Material {
-  double youngs_modulus;
-  double poisson_ratio;
-};
-
-// eq. 3: r' = (1/r1 + 1/r2)^-1 (m) of two spheres.
-double effective_radius(double r1, double r2);
-// eq. 3 for a sphere on a plane (r2 -> infinity): r' = r1.
-double effective_radius_plane(double r1);
-// eq. 4: E' = ((1-nu1^2)/E1 + (1-nu2^2)/E2)^-1 (Pa).
-double effective_modulus(const Material &a, const Material &b);
-// eq. 2: Hertz contact radius r_H = (3 F r'/(4 E'))^(1/3) (m) under normal force F (N).
-double hertz_contact_radius(double force, double r_eff, double E_eff);
-// eq. 5: F_lim (N) for strength sigma_lim (Pa).
-double limit_force(double sigma_lim, double r_eff, double E_eff);
 // eq. 6/10: sigma_lim = s (d/(N d0))^(-3/m) (Pa) for strength draw s (Pa), diameter d (m),
 // reference diameter d0 (m), Weibull modulus m and upscaling factor N.
 double size_scaled_strength(double s, double d, double d0, double weibull_m, double scale_factor);
 
-// The breakage check of one contact: F / F_lim, which reaches 1 at breakage. Precomputes what depends
-// only on the particle and material pair so that the per-contact cost is one multiply and a cube.
-class BreakageLimit {
- public:
-  // sigma_lim (Pa): the particle's size-scaled strength; E_eff (Pa): eq. 4 for the contact.
-  BreakageLimit(double sigma_lim, double E_eff);
-  double limit_force(double r_eff) const;
-  double force_ratio(double normal_force, double r_eff) const;
+// The breakage check of eq. 5/7 as a product of a contact term and a strength term:
+//   F / F_lim = F (4 E'/3)^2 / r'^2  x  1 / (pi sigma_lim)^3
+// since (3 r'/(4 E'))^(2/3) cubed is (3 r'/(4 E'))^2. The contact models evaluate the first for each
+// contact (contact_load(), hertz_mindlin_contact_load.h), fix crush the second once per particle, and
+// the running maximum over a particle's contacts needs no division by its strength.
 
- private:
-  double coefficient_;  // [sigma_lim pi (3/(4 E'))^(2/3)]^3, so F_lim = coefficient_ r'^2
-};
+// The strength term (Pa^-3): 1 / (pi sigma_lim)^3; infinite for zero strength (breaks under any
+// load; a particle without load then has contact term 0 and stays whole).
+inline double strength_term(double sigma_lim)
+{
+  const double s = pi * sigma_lim;
+  return s > 0.0 ? 1.0 / (s * s * s) : HUGE_VAL;
+}
+
+// F / F_lim of one contact: the product, 0 without load.
+inline double force_ratio(double contact_load, double strength_term)
+{
+  return contact_load > 0.0 ? contact_load * strength_term : 0.0;
+}
 
 }  // namespace crush
 

@@ -17,7 +17,7 @@
 #include "crush_model_error.h"
 #include "domain.h"
 #include "error.h"
-#include "fix_crush_materials.h"
+#include "type_materials.h"
 #include "fix_property_atom.h"
 #include "force.h"
 #include "irregular.h"
@@ -33,7 +33,8 @@ using namespace FixConst;
 
 namespace {
 
-enum Column { STRENGTH = 0, GENERATION = 1, RATIO = 2 };
+enum Column { STRENGTH = 0, GENERATION = 1, RATIO = 2 };              // per-atom array
+enum Output { EVENTS = 0, REMOVED_VOLUME = 1, LARGEST_RATIO = 2, REPLACE_SECONDS = 3, NOUTPUT = 4 };  // vector
 
 crush::CrushSettings parse(Error *error, int narg, char **arg)
 {
@@ -49,12 +50,12 @@ crush::CrushSettings parse(Error *error, int narg, char **arg)
 // the load for the next step; returns the largest ratio in the group. (The product would be 0 x inf
 // for an unloaded particle of zero strength, hence the test.) A function of its own, so that the
 // running maximum stays in a register.
-double store_ratios(int n, double *load, const double *inv_strength_term, const int *mask, int groupbit,
+double store_ratios(int n, double *load, const double *strength_term, const int *mask, int groupbit,
                     double **data)
 {
   double largest = 0.0;
   for (int i = 0; i < n; i++) {
-    const double ratio = load[i] > 0.0 ? load[i] * inv_strength_term[i] : 0.0;
+    const double ratio = crush::force_ratio(load[i], strength_term[i]);
     load[i] = 0.0;
     data[i][RATIO] = ratio;
     const double counted = (mask[i] & groupbit) ? ratio : 0.0;
@@ -70,10 +71,10 @@ FixCrush::FixCrush(LAMMPS *lmp, int narg, char **arg) :
   settings_(parse(error, narg, arg)),
   strength_(settings_.distribution, settings_.sigma_lim0, settings_.cv, settings_.weibull_m, settings_.seed),
   nfrag_(static_cast<int>(crush::fragment_layout(settings_.layout, 1.0).size())),
-  fix_data_(NULL), data_id_(NULL), inv_limit_factor_(NULL), irregular_(NULL), log_(NULL),
-  events_total_(0.0), removed_volume_(0.0), max_ratio_(0.0), local_max_ratio_(0.0), max_ratio_step_(-1),
-  smallest_fragment_diameter_(0.0), initial_largest_diameter_(0.0), next_tag_(0.0), replace_seconds_(0.0),
-  particle_count_(0.0), initialized_(false), refresh_needed_(true), recording_(true)
+  fix_data_(NULL), data_id_(NULL), limit_factor_(NULL), irregular_(NULL), log_(NULL),
+  events_total_(0), removed_volume_(0.0), max_ratio_(0.0), local_max_ratio_(0.0), max_ratio_step_(-1),
+  smallest_fragment_diameter_(0.0), initial_largest_diameter_(0.0), next_tag_(1), replace_seconds_(0.0),
+  particle_count_(0), initialized_(false), refresh_needed_(true), recording_(true)
 {
   if (!atom->radius_flag || !atom->rmass_flag || !atom->density_flag)
     error->all(FLERR, "fix crush needs 'atom_style granular' (radius, mass and density per atom)");
@@ -84,7 +85,7 @@ FixCrush::FixCrush(LAMMPS *lmp, int narg, char **arg) :
       error->all(FLERR, "fix crush: only one fix crush may be defined");
 
   vector_flag = 1;
-  size_vector = 4;
+  size_vector = NOUTPUT;
   global_freq = 1;
   extvector = 0;
   peratom_flag = 1;
@@ -95,9 +96,9 @@ FixCrush::FixCrush(LAMMPS *lmp, int narg, char **arg) :
   next_reneighbor = -1;
 
   irregular_ = new Irregular(lmp);
-  memory->create(inv_limit_factor_, atom->ntypes + 1, atom->ntypes + 1, "crush:inv_limit_factor");
-  recorder_.inv_limit_factor = inv_limit_factor_;
-  CrushMonitor::attach(lmp, &recorder_);
+  memory->create(limit_factor_, atom->ntypes + 1, atom->ntypes + 1, "crush:limit_factor");
+  recorder_.limit_factor = limit_factor_;
+  ContactLoadMonitor::attach(lmp, &recorder_);
 
   if (comm->me == 0 && !settings_.log_file.empty()) {
     log_ = fopen(settings_.log_file.c_str(), "w");
@@ -113,10 +114,10 @@ FixCrush::FixCrush(LAMMPS *lmp, int narg, char **arg) :
 
 FixCrush::~FixCrush()
 {
-  CrushMonitor::attach(lmp, NULL);
+  ContactLoadMonitor::attach(lmp, NULL);
   if (log_) fclose(log_);
   delete irregular_;
-  memory->destroy(inv_limit_factor_);
+  memory->destroy(limit_factor_);
   if (data_id_ && modify->find_fix(data_id_) >= 0) modify->delete_fix(data_id_);
   delete[] data_id_;
 }
@@ -167,10 +168,8 @@ void FixCrush::setup_limit_factors()
   for (int a = 1; a <= ntypes; a++)
     for (int b = 1; b <= ntypes; b++) {
       try {
-        const double E_eff = crush::effective_modulus(type_material(modify, ntypes, a, style),
-                                                      type_material(modify, ntypes, b, style));
-        const double c = 4.0 * E_eff / 3.0;
-        inv_limit_factor_[a][b] = c * c;
+        limit_factor_[a][b] = crush::limit_factor(crush::effective_modulus(type_material(modify, ntypes, a, style),
+                                                                           type_material(modify, ntypes, b, style)));
       } catch (const crush::ModelError &e) {
         const std::string msg = std::string("fix crush: youngsModulus/poissonsRatio: ") + e.what();
         error->all(FLERR, msg.c_str());
@@ -202,8 +201,8 @@ void FixCrush::draw_missing_strengths()
 
 void FixCrush::setup_pre_force(int vflag)
 {
-  double n = atom->nlocal;
-  MPI_Allreduce(&n, &particle_count_, 1, MPI_DOUBLE, MPI_SUM, world);
+  bigint n = atom->nlocal;
+  MPI_Allreduce(&n, &particle_count_, 1, MPI_LMP_BIGINT, MPI_SUM, world);
   if (initial_largest_diameter_ == 0.0) {
     double dmax = 0.0;
     for (int i = 0; i < atom->nlocal; i++)
@@ -233,7 +232,7 @@ void FixCrush::record_on_check_steps()
 {
   const bool record = is_check_step();
   if (record == recording_) return;
-  CrushMonitor::attach(lmp, record ? &recorder_ : NULL);
+  ContactLoadMonitor::attach(lmp, record ? &recorder_ : NULL);
   recording_ = record;
 }
 
@@ -247,11 +246,8 @@ bool FixCrush::is_check_step() const
 void FixCrush::update_strength_terms()
 {
   double **data = fix_data_->array_atom;
-  inv_strength_term_.resize(atom->nlocal);
-  for (int i = 0; i < atom->nlocal; i++) {
-    const double s = crush::pi * data[i][STRENGTH];
-    inv_strength_term_[i] = s > 0.0 ? 1.0 / (s * s * s) : HUGE_VAL;
-  }
+  strength_term_.resize(atom->nlocal);
+  for (int i = 0; i < atom->nlocal; i++) strength_term_[i] = crush::strength_term(data[i][STRENGTH]);
 }
 
 // Modify::setup() has just reset the per-atom data of a new fix property/atom to its defaults
@@ -270,7 +266,7 @@ void FixCrush::end_of_step()
   array_atom = data;
   const int *mask = atom->mask;
   const double *radius = atom->radius;
-  const double local_max = store_ratios(atom->nlocal, load_.data(), inv_strength_term_.data(), mask, groupbit, data);
+  const double local_max = store_ratios(atom->nlocal, load_.data(), strength_term_.data(), mask, groupbit, data);
   // The mothers, in a second pass: this step's loop stays free of calls, and is skipped when no
   // particle here reached its limit (nearly every step).
   std::vector<int> mothers;
@@ -281,47 +277,42 @@ void FixCrush::end_of_step()
   max_ratio_step_ = -1;  // reduced over processors when output asks for it, not every step
   // One reduction: the events, and the particle count, so that particles lost through the box
   // (which LIGGGHTS deletes silently by default) stop the run instead of unbalancing the books.
-  double local_counts[2] = {static_cast<double>(mothers.size()), static_cast<double>(atom->nlocal)}, counts[2];
-  MPI_Allreduce(local_counts, counts, 2, MPI_DOUBLE, MPI_SUM, world);
+  bigint local_counts[2] = {static_cast<bigint>(mothers.size()), atom->nlocal}, counts[2];
+  MPI_Allreduce(local_counts, counts, 2, MPI_LMP_BIGINT, MPI_SUM, world);
   // Crushing only adds particles: fewer than at the last check means particles were lost.
   if (counts[1] < particle_count_) {
     char msg[320];
-    snprintf(msg, sizeof(msg), "fix crush: %.0f particles were lost during the run (they left the simulation "
+    snprintf(msg, sizeof(msg), "fix crush: " BIGINT_FORMAT " particles were lost during the run (they left the simulation "
              "box, which LIGGGHTS allows silently): the volume books no longer balance; keep the particles "
              "inside the box", particle_count_ - counts[1]);
     error->all(FLERR, msg);
   }
   particle_count_ = counts[1];
-  const int nevents = static_cast<int>(counts[0]);
-  if (nevents == 0) return;
+  if (counts[0] == 0) return;
   pending_ = gather_events(mothers);
   next_reneighbor = update->ntimestep + 1;
 }
 
-// All processors get every event, sorted by tag: the order that numbers the fragments.
+// All processors get every event, sorted by tag: the order that numbers the fragments. Events are
+// plain structs, identical in layout on every processor: gathered as bytes.
 std::vector<FixCrush::Event> FixCrush::gather_events(const std::vector<int> &local_mothers)
 {
-  const int width = sizeof(Event) / sizeof(double);
-  std::vector<double> mine;
+  std::vector<Event> mine;
   double **data = fix_data_->array_atom;
-  for (int i : local_mothers) {
-    const Event e = {static_cast<double>(atom->tag[i]), 2.0 * atom->radius[i], data[i][GENERATION],
-                     data[i][RATIO], {atom->x[i][0], atom->x[i][1], atom->x[i][2]}};
-    mine.insert(mine.end(), reinterpret_cast<const double *>(&e), reinterpret_cast<const double *>(&e) + width);
-  }
-  const int nprocs = comm->nprocs;
+  for (int i : local_mothers)
+    mine.push_back({atom->tag[i], static_cast<int>(data[i][GENERATION]), 2.0 * atom->radius[i], data[i][RATIO],
+                    {atom->x[i][0], atom->x[i][1], atom->x[i][2]}});
+  const int nprocs = comm->nprocs, size = static_cast<int>(sizeof(Event));
   std::vector<int> counts(nprocs), displs(nprocs);
-  int count = static_cast<int>(mine.size());
+  int count = static_cast<int>(mine.size()) * size;
   MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
   int total = 0;
   for (int p = 0; p < nprocs; p++) {
     displs[p] = total;
     total += counts[p];
   }
-  std::vector<double> all(total);
-  MPI_Allgatherv(mine.data(), count, MPI_DOUBLE, all.data(), counts.data(), displs.data(), MPI_DOUBLE, world);
-  std::vector<Event> events(total / width);
-  std::memcpy(events.data(), all.data(), total * sizeof(double));
+  std::vector<Event> events(total / size);
+  MPI_Allgatherv(mine.data(), count, MPI_BYTE, events.data(), counts.data(), displs.data(), MPI_BYTE, world);
   std::sort(events.begin(), events.end(), [](const Event &a, const Event &b) { return a.tag < b.tag; });
   return events;
 }
@@ -342,10 +333,10 @@ void FixCrush::replace_mothers()
   int maxtag = 0, maxtag_all = 0;
   for (int i = 0; i < atom->nlocal; i++) maxtag = std::max(maxtag, atom->tag[i]);
   MPI_Allreduce(&maxtag, &maxtag_all, 1, MPI_INT, MPI_MAX, world);
-  const double first = std::max(static_cast<double>(maxtag_all) + 1.0, next_tag_);
-  if (first + static_cast<double>(nfrag_) * pending_.size() > 2147483647.0)
-    error->all(FLERR, "fix crush: particle tags would exceed the largest 32-bit integer");
-  log_events(pending_, static_cast<int>(first));
+  const tagint first = std::max(static_cast<tagint>(maxtag_all) + 1, next_tag_);
+  if (static_cast<bigint>(first) + static_cast<bigint>(nfrag_) * static_cast<bigint>(pending_.size()) > MAXTAGINT)
+    error->all(FLERR, "fix crush: particle tags would exceed the largest tag LIGGGHTS allows (MAXTAGINT)");
+  log_events(pending_, first);
 
   const std::vector<std::pair<std::size_t, int>> owned = owned_mothers();
   const int nlocal_before = atom->nlocal;
@@ -355,8 +346,7 @@ void FixCrush::replace_mothers()
     const std::size_t k = event.first;
     const int i = event.second;
     mothers.push_back(i);
-    removed_local += create_fragments(i, static_cast<int>(first) + nfrag_ * static_cast<int>(k),
-                                      static_cast<int>(pending_[k].generation) + 1);
+    removed_local += create_fragments(i, first + nfrag_ * static_cast<tagint>(k), pending_[k].generation + 1);
     const double d = crush::smallest_fragment_ratio(settings_.layout) * pending_[k].diameter;
     smallest = smallest == 0.0 ? d : std::min(smallest, d);
   }
@@ -374,10 +364,10 @@ void FixCrush::replace_mothers()
   if (smallest_all < 1e300)
     smallest_fragment_diameter_ = smallest_fragment_diameter_ == 0.0 ? smallest_all
                                                                     : std::min(smallest_fragment_diameter_, smallest_all);
-  events_total_ += pending_.size();
-  particle_count_ += static_cast<double>(nfrag_ - 1) * pending_.size();
+  events_total_ += static_cast<bigint>(pending_.size());
+  particle_count_ += static_cast<bigint>(nfrag_ - 1) * static_cast<bigint>(pending_.size());
   check_books(sums[1], sums[2]);
-  next_tag_ = first + static_cast<double>(nfrag_) * pending_.size();
+  next_tag_ = first + nfrag_ * static_cast<tagint>(pending_.size());
   atom->natoms += static_cast<bigint>(nfrag_ - 1) * static_cast<bigint>(pending_.size());
 
   atom->nghost = 0;
@@ -401,7 +391,7 @@ std::vector<std::pair<std::size_t, int>> FixCrush::owned_mothers() const
   std::vector<std::pair<std::size_t, int>> owned;
   const int nlocal = atom->nlocal;
   for (std::size_t k = 0; k < pending_.size(); k++) {
-    const int i = atom->map(static_cast<int>(pending_[k].tag));
+    const int i = atom->map(pending_[k].tag);
     if (i >= 0 && i < nlocal) owned.emplace_back(k, i);  // else a ghost, or owned by another processor
   }
   return owned;
@@ -439,7 +429,7 @@ void FixCrush::check_unique_tags() const
 }
 
 // Appends the mother's fragments (the mother is deleted afterwards) and returns the volume they leave out (m^3).
-double FixCrush::create_fragments(int mother, int first_tag, int generation)
+double FixCrush::create_fragments(int mother, tagint first_tag, int generation)
 {
   // Copy the mother: creating atoms may reallocate every per-atom array.
   const int type = atom->type[mother], mask = atom->mask[mother], tag = atom->tag[mother];
@@ -462,7 +452,7 @@ double FixCrush::create_fragments(int mother, int first_tag, int generation)
     atom->avec->create_atom(type, coord);
     const int n = atom->nlocal - 1;
     const double r = fragments[f].radius;
-    atom->tag[n] = first_tag + static_cast<int>(f);
+    atom->tag[n] = first_tag + static_cast<tagint>(f);
     atom->mask[n] = mask;
     atom->image[n] = image;
     atom->radius[n] = r;
@@ -494,14 +484,15 @@ void FixCrush::delete_mothers(std::vector<int> &mothers)
   }
 }
 
-void FixCrush::log_events(const std::vector<Event> &events, int first_new_tag)
+void FixCrush::log_events(const std::vector<Event> &events, tagint first_new_tag)
 {
   if (!log_) return;
   for (std::size_t k = 0; k < events.size(); k++) {
     const Event &e = events[k];
-    fprintf(log_, BIGINT_FORMAT ",%.0f,%.10g,%.0f,%.10g,%.10g,%.10g,%.10g", update->ntimestep - 1, e.tag,
-            e.diameter, e.generation, e.ratio, e.x[0], e.x[1], e.x[2]);
-    for (int f = 0; f < nfrag_; f++) fprintf(log_, ",%d", first_new_tag + nfrag_ * static_cast<int>(k) + f);
+    fprintf(log_, BIGINT_FORMAT "," BIGINT_FORMAT ",%.10g,%d,%.10g,%.10g,%.10g,%.10g", update->ntimestep - 1,
+            static_cast<bigint>(e.tag), e.diameter, e.generation, e.ratio, e.x[0], e.x[1], e.x[2]);
+    for (int f = 0; f < nfrag_; f++)
+      fprintf(log_, "," BIGINT_FORMAT, static_cast<bigint>(first_new_tag + nfrag_ * static_cast<tagint>(k) + f));
     fprintf(log_, "\n");
   }
   fflush(log_);
@@ -558,9 +549,9 @@ void FixCrush::check_time_step(double smallest_radius) const
 
 double FixCrush::compute_vector(int n)
 {
-  if (n == 0) return events_total_;
-  if (n == 1) return removed_volume_;
-  if (n == 2) {
+  if (n == EVENTS) return static_cast<double>(events_total_);
+  if (n == REMOVED_VOLUME) return removed_volume_;
+  if (n == LARGEST_RATIO) {
     // Called by every processor (thermo, variables, fix ave/time), as LAMMPS requires.
     if (max_ratio_step_ != update->ntimestep) {
       MPI_Allreduce(&local_max_ratio_, &max_ratio_, 1, MPI_DOUBLE, MPI_MAX, world);
@@ -571,34 +562,41 @@ double FixCrush::compute_vector(int n)
   return replace_seconds_;
 }
 
-// The pending events travel too: a restart written at the end of a step in which grains broke
-// continues with their replacement, as the uninterrupted run does.
+// The global state, then the pending events (a restart written at the end of a step in which grains
+// broke continues with their replacement, as the uninterrupted run does), as bytes.
+namespace {
+struct RestartState {
+  bigint events_total, npending;
+  double removed_volume, smallest_fragment_diameter, initial_largest_diameter;
+  tagint next_tag;
+  std::uint64_t seed;
+};
+}  // namespace
+
 void FixCrush::write_restart(FILE *fp)
 {
-  const int width = sizeof(Event) / sizeof(double);
-  std::vector<double> list = {events_total_, removed_volume_, smallest_fragment_diameter_, initial_largest_diameter_,
-                              next_tag_, static_cast<double>(settings_.seed), static_cast<double>(pending_.size())};
-  const double *events = reinterpret_cast<const double *>(pending_.data());
-  list.insert(list.end(), events, events + width * pending_.size());
+  const RestartState state = {events_total_, static_cast<bigint>(pending_.size()), removed_volume_,
+                              smallest_fragment_diameter_, initial_largest_diameter_, next_tag_, settings_.seed};
   if (comm->me == 0) {
-    int size = static_cast<int>(list.size() * sizeof(double));
+    int size = static_cast<int>(sizeof(RestartState) + pending_.size() * sizeof(Event));
     fwrite(&size, sizeof(int), 1, fp);
-    fwrite(list.data(), sizeof(double), list.size(), fp);
+    fwrite(&state, sizeof(RestartState), 1, fp);
+    fwrite(pending_.data(), sizeof(Event), pending_.size(), fp);
   }
 }
 
 void FixCrush::restart(char *buf)
 {
-  const double *list = reinterpret_cast<const double *>(buf);
-  events_total_ = list[0];
-  removed_volume_ = list[1];
-  smallest_fragment_diameter_ = list[2];
-  initial_largest_diameter_ = list[3];
-  next_tag_ = list[4];
-  if (static_cast<std::uint64_t>(list[5]) != settings_.seed && comm->me == 0)
+  RestartState state;
+  std::memcpy(&state, buf, sizeof(RestartState));
+  events_total_ = state.events_total;
+  removed_volume_ = state.removed_volume;
+  smallest_fragment_diameter_ = state.smallest_fragment_diameter;
+  initial_largest_diameter_ = state.initial_largest_diameter;
+  next_tag_ = state.next_tag;
+  if (state.seed != settings_.seed && comm->me == 0)
     error->warning(FLERR, "fix crush: the restart file was written with another 'seed'");
-  const std::size_t npending = static_cast<std::size_t>(list[6]);
-  pending_.resize(npending);
-  std::memcpy(pending_.data(), list + 7, npending * sizeof(Event));
-  if (npending > 0) next_reneighbor = update->ntimestep + 1;
+  pending_.resize(static_cast<std::size_t>(state.npending));
+  std::memcpy(pending_.data(), buf + sizeof(RestartState), pending_.size() * sizeof(Event));
+  if (!pending_.empty()) next_reneighbor = update->ntimestep + 1;
 }

@@ -3,7 +3,7 @@
    (Ciantia et al. 2014). See doc/fix_crush.txt.
 
    Per checked step: the hertz/scaled contact model records each particle's largest F_n / F_lim
-   through the CrushRecorder during the pair and wall force computations (pre_force() clears the
+   through the ContactLoadRecorder during the pair and wall force computations (pre_force() clears the
    record after reneighboring, end_of_step() as it reads it); end_of_step() finds the particles that
    reached their limit, agrees on them across processors (sorted by tag, so fragment tags and
    strengths never depend on the decomposition), logs them, and schedules a reneighboring;
@@ -26,7 +26,8 @@ FixStyle(crush,FixCrush)
 #include "crush_settings.h"
 #include "crush_strength.h"
 #include "fix.h"
-#include "fix_crush_monitor.h"
+#include "lmptype.h"
+#include "contact_load_monitor.h"
 
 namespace LAMMPS_NS {
 
@@ -55,7 +56,9 @@ class FixCrush : public Fix {
  private:
   // One breakage: the mother's data as agreed by all processors.
   struct Event {
-    double tag, diameter, generation, ratio, x[3];
+    tagint tag;
+    int generation;
+    double diameter, ratio, x[3];
   };
 
   void check_pair_style() const;
@@ -69,12 +72,12 @@ class FixCrush : public Fix {
   double smallest_possible_radius() const;
   double smallest_radius() const;
   std::vector<Event> gather_events(const std::vector<int> &local_mothers);
-  void log_events(const std::vector<Event> &events, int first_new_tag);
+  void log_events(const std::vector<Event> &events, tagint first_new_tag);
   void replace_mothers();
   std::vector<std::pair<std::size_t, int>> owned_mothers() const;
   void check_books(double added, double replaced) const;
   void check_unique_tags() const;
-  double create_fragments(int mother, int first_tag, int generation);
+  double create_fragments(int mother, tagint first_tag, int generation);
   void delete_mothers(std::vector<int> &mothers);
 
   crush::CrushSettings settings_;
@@ -82,24 +85,24 @@ class FixCrush : public Fix {
   const int nfrag_;                  // fragments per event (layout)
   class FixPropertyAtom *fix_data_;  // per atom: sigma_lim (Pa), generation, last F_n/F_lim
   char *data_id_;
-  CrushRecorder recorder_;
-  double **inv_limit_factor_;        // per type pair: (4 E'/3)^2
+  ContactLoadRecorder recorder_;
+  double **limit_factor_;        // per type pair: (4 E'/3)^2
   std::vector<double> load_;         // per local and ghost atom: largest F_n (4 E'/3)^2 / r'^2 this step
-  std::vector<double> inv_strength_term_;  // per local atom: 1 / (pi sigma_lim)^3 (Pa^-3), at reneighboring
+  std::vector<double> strength_term_;  // per local atom: 1 / (pi sigma_lim)^3 (Pa^-3), at reneighboring
   class Irregular *irregular_;
   FILE *log_;
 
   std::vector<Event> pending_;       // agreed at end_of_step, replaced at the next pre_exchange
-  double events_total_;
+  bigint events_total_;
   double removed_volume_;
   double max_ratio_;                 // over all processors, at step max_ratio_step_
   double local_max_ratio_;           // this processor's, at the last end_of_step
   bigint max_ratio_step_;
   double smallest_fragment_diameter_;
   double initial_largest_diameter_;
-  double next_tag_;
+  tagint next_tag_;                  // the first tag never given out
   double replace_seconds_;           // wall time spent in replace_mothers(), for the event cost
-  double particle_count_;            // particles at the last check: losses stop the run
+  bigint particle_count_;            // particles at the last check: losses stop the run
   bool initialized_;                 // init() ran: 'run pre no' right after the fix skips it
   bool refresh_needed_;              // clear every load slot at the next pre_force (see refresh_recorder)
   bool recording_;                   // the recorder is attached (with 'every' > 1: on check steps only)

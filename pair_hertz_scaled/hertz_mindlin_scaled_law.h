@@ -24,6 +24,12 @@ struct ShearMaterial {
   double poisson_ratio;
 };
 
+// G = E / (2 (1 + nu)) from LIGGGHTS' youngsModulus and poissonsRatio.
+inline ShearMaterial shear_material(double youngs_modulus, double poisson_ratio)
+{
+  return {youngs_modulus / (2.0 * (1.0 + poisson_ratio)), poisson_ratio};
+}
+
 // The material factors of eq. 8-9 for one pair of materials (per LIGGGHTS type pair), so that the
 // per-contact cost is one square root. With Dt = D1 D2/(D1+D2):
 //   k_N = normal sqrt(Dt U),  normal = 2 sqrt2 <G> / (3 (1-<nu>))                       (eq. 8)
@@ -38,43 +44,23 @@ HertzMindlinCoefficients hertz_mindlin_coefficients(const ShearMaterial &a, cons
 // Dt = D1 D2/(D1+D2) (m) of a ball-ball contact from the radii; for a plane (infinite radius) Dt = D1.
 inline double diameter_term_from_radii(double r1, double r2) { return 2.0 * r1 * r2 / (r1 + r2); }
 
-inline double normal_stiffness(const HertzMindlinCoefficients &c, double diameter_term, double overlap)
-{
-  return c.normal * std::sqrt(diameter_term * overlap);
-}
-
-inline double shear_stiffness(const HertzMindlinCoefficients &c, double diameter_term, double overlap)
-{
-  return c.shear * std::sqrt(diameter_term * overlap);
-}
-
-// eq. 8-9 for one contact geometry, in the paper's form (|F_n| enters eq. 9 as given).
-class HertzMindlinScaled {
- public:
-  // Ball-ball contact of diameters d1, d2 (m).
-  HertzMindlinScaled(const ShearMaterial &a, const ShearMaterial &b, double d1, double d2);
-  // Ball-plane contact: the plane is a sphere of infinite diameter made of material b.
-  static HertzMindlinScaled ball_plane(const ShearMaterial &ball, const ShearMaterial &wall, double d);
-
-  // eq. 8: secant normal stiffness (N/m) at overlap U (m).
-  double normal_stiffness(double overlap) const;
-  // F_n = k_N U (N).
-  double normal_force(double overlap) const;
-  // eq. 9: tangent shear stiffness (N/m) under normal force |F_n| (N).
-  double shear_stiffness(double normal_force) const;
-
-  // D1 D2/(D1+D2) (m); 2 R* in terms of radii.
-  double diameter_term() const { return diameter_term_; }
-
- private:
-  HertzMindlinScaled(const ShearMaterial &a, const ShearMaterial &b, double diameter_term, bool);
-  double diameter_term_;
-  double normal_coefficient_;  // k_N / sqrt(U)
-  double shear_coefficient_;   // k_S / |F_n|^(1/3) (eq. 9)
+// eq. 8-9 at one contact: the secant normal stiffness k_N and the tangent shear stiffness k_S (N/m)
+// at overlap U (m) for diameter term Dt (m). The one place the law is evaluated: the contact models,
+// the servo walls and the automatic time step all call it. One square root serves both.
+struct HertzMindlinStiffness {
+  double normal;
+  double shear;
 };
 
-// Young's modulus from G and nu: E = 2 G (1 + nu).
-double youngs_modulus(const ShearMaterial &m);
+inline HertzMindlinStiffness contact_stiffness(const HertzMindlinCoefficients &c, double diameter_term,
+                                               double overlap)
+{
+  const double root = std::sqrt(diameter_term * overlap);
+  return {c.normal * root, c.shear * root};
+}
+
+// dF_n/dU = 1.5 k_N: the tangent of F_n = k_N U with k_N ~ sqrt(U), for stability and servo gains.
+inline double tangent_normal_stiffness(double secant_normal_stiffness) { return 1.5 * secant_normal_stiffness; }
 
 // Rayleigh critical time step (s) of a sphere of radius r (m), density rho (kg/m^3):
 //   t_R = pi r sqrt(rho/G) / (0.1631 nu + 0.8766)

@@ -22,7 +22,7 @@ NORMAL_MODEL(HERTZ_SCALED,hertz/scaled,5)
 #include "error.h"
 #include "lammps.h"
 #include "crush_model_error.h"
-#include "fix_crush_monitor.h"
+#include "contact_load_monitor.h"
 #include "global_properties.h"
 #include "hertz_mindlin_scaled_law.h"
 #include "normal_model_base.h"
@@ -43,8 +43,8 @@ namespace MODEL_PARAMS
     try {
       for (int i = 1; i <= max_type; i++)
         for (int j = 1; j <= max_type; j++) {
-          const crush::ShearMaterial a{E[i] / (2.0 * (1.0 + nu[i])), nu[i]};
-          const crush::ShearMaterial b{E[j] / (2.0 * (1.0 + nu[j])), nu[j]};
+          const crush::ShearMaterial a = crush::shear_material(E[i], nu[i]);
+          const crush::ShearMaterial b = crush::shear_material(E[j], nu[j]);
           const crush::HertzMindlinCoefficients c = crush::hertz_mindlin_coefficients(a, b);
           matrix->data[i][j] = shear ? c.shear : c.normal;
         }
@@ -104,9 +104,9 @@ namespace ContactModels {
       const int itype = sidata.itype, jtype = sidata.jtype;
       const double diameter_term = sidata.is_wall ? 2.0 * sidata.radi
                                                   : crush::diameter_term_from_radii(sidata.radi, sidata.radj);
-      // eq. 8-9 in per-type-pair form (hertz_mindlin_scaled_law.h): k = coefficient sqrt(Dt U).
-      const double root = sqrt(diameter_term * sidata.deltan);
-      const double kn = normal_coeff[itype][jtype] * root;
+      const crush::HertzMindlinStiffness k = crush::contact_stiffness(
+          {normal_coeff[itype][jtype], shear_coeff[itype][jtype]}, diameter_term, sidata.deltan);
+      const double kn = k.normal;
       const double Fn_elastic = kn * sidata.deltan;
       double Fn = Fn_elastic;
       sidata.gamman = sidata.gammat = 0.0;
@@ -118,10 +118,10 @@ namespace ContactModels {
       }
       sidata.Fn = Fn;
       sidata.kn = kn;
-      sidata.kt = shear_coeff[itype][jtype] * root;
+      sidata.kt = k.shear;
 
       // Breakage check against the elastic (Hertzian) force, whose contact area eq. 5 assumes.
-      if (const CrushRecorder *recorder = monitor.recorder())
+      if (const ContactLoadRecorder *recorder = monitor.recorder())
         recorder->record(sidata.i, sidata.j, sidata.is_wall, itype, jtype, Fn_elastic, 0.5 * diameter_term);
 
       const double scale = sidata.is_wall ? sidata.area_ratio : 1.0;
@@ -148,7 +148,7 @@ namespace ContactModels {
     double **shear_coeff;
     double **betaeff;
     bool viscous_damping;
-    CrushMonitor monitor;
+    ContactLoadMonitor monitor;
   };
 
 }

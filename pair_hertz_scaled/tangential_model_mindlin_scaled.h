@@ -2,7 +2,7 @@
    liggghts-crush: tangential contact model mindlin/scaled.
 
    PFC's incremental shear force with the shear stiffness k_S of eq. 9 (Ciantia et al. 2014), which
-   the normal model hertz/scaled supplies in sidata.kt:
+   the normal model hertz/scaled supplies in sidata.kt (the law: hertz_mindlin_shear_law.h):
      F_s <- R(F_s) - k_S du_s,   du_s = v_t dt,   |F_s| <= mu |F_n|   (Coulomb)
    R turns the stored force into the current tangent plane keeping its magnitude (the contact plane
    rotates with the particles). History: the shear force vector (3 values, N). LIGGGHTS' 'tangential
@@ -20,6 +20,7 @@ TANGENTIAL_MODEL(TANGENTIAL_MINDLIN_SCALED,mindlin/scaled,3)
 
 #include "contact_models.h"
 #include "global_properties.h"
+#include "hertz_mindlin_shear_law.h"
 #include "tangential_model_base.h"
 #include "update.h"
 
@@ -52,23 +53,17 @@ namespace ContactModels {
       if (sidata.contact_flags) *sidata.contact_flags |= CONTACT_TANGENTIAL_MODEL;
       const double *en = sidata.en;
       double *const shear = &sidata.contact_history[history_offset];
-      // The stored shear force acts on i; j gets its opposite.
+      // The stored shear force acts on i; j gets its opposite. The law: hertz_mindlin_shear_law.h.
       double Fs[3] = {shear[0], shear[1], shear[2]};
       const bool update_history = sidata.computeflag && sidata.shearupdate;
       if (update_history) {
-        rotate_into_tangent_plane(Fs, en);
-        const double kt_dt = sidata.kt * update->dt;
-        Fs[0] -= kt_dt * sidata.vtr1;
-        Fs[1] -= kt_dt * sidata.vtr2;
-        Fs[2] -= kt_dt * sidata.vtr3;
+        const double vt[3] = {sidata.vtr1, sidata.vtr2, sidata.vtr3};
+        crush::increment_shear_force(Fs, en, sidata.kt * update->dt, vt);
       }
-      const double Fs_mag = sqrt(Fs[0] * Fs[0] + Fs[1] * Fs[1] + Fs[2] * Fs[2]);
-      const double Fs_max = coeffFrict[sidata.itype][sidata.jtype] * fabs(sidata.Fn);
       double F[3] = {Fs[0], Fs[1], Fs[2]};
-      if (Fs_mag > Fs_max) {
+      if (crush::cap_at_coulomb(Fs, coeffFrict[sidata.itype][sidata.jtype] * fabs(sidata.Fn))) {
         // Sliding: the stored force stays on the Coulomb limit.
-        const double ratio = Fs_mag > 0.0 ? Fs_max / Fs_mag : 0.0;
-        for (int k = 0; k < 3; ++k) F[k] = Fs[k] *= ratio;
+        for (int k = 0; k < 3; ++k) F[k] = Fs[k];
       } else if (sidata.gammat != 0.0) {
         F[0] -= sidata.gammat * sidata.vtr1;
         F[1] -= sidata.gammat * sidata.vtr2;
@@ -112,20 +107,6 @@ namespace ContactModels {
     inline void endPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
 
   private:
-    // Removes the normal component of the stored force and restores its magnitude.
-    static inline void rotate_into_tangent_plane(double *Fs, const double *en)
-    {
-      const double before = Fs[0] * Fs[0] + Fs[1] * Fs[1] + Fs[2] * Fs[2];
-      if (before == 0.0) return;
-      const double dot = Fs[0] * en[0] + Fs[1] * en[1] + Fs[2] * en[2];
-      for (int k = 0; k < 3; ++k) Fs[k] -= dot * en[k];
-      const double after = Fs[0] * Fs[0] + Fs[1] * Fs[1] + Fs[2] * Fs[2];
-      if (after > 0.0) {
-        const double s = sqrt(before / after);
-        for (int k = 0; k < 3; ++k) Fs[k] *= s;
-      }
-    }
-
     double **coeffFrict;
     int history_offset;
   };

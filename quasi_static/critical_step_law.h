@@ -28,10 +28,9 @@ struct ContactStiffness {
 inline void add_contact(ContactStiffness &sum, const HertzMindlinCoefficients &c, double diameter_term,
                         double overlap)
 {
-  const double root = std::sqrt(diameter_term * overlap);
-  const double kn = 1.5 * c.normal * root, ks = c.shear * root;
-  sum.translational += kn + ks;
-  sum.shear += ks;
+  const HertzMindlinStiffness k = contact_stiffness(c, diameter_term, overlap);
+  sum.translational += tangent_normal_stiffness(k.normal) + k.shear;
+  sum.shear += k.shear;
 }
 
 // The particle's critical step (s); 1e300 without contacts.

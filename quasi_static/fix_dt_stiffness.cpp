@@ -12,7 +12,7 @@
 #include "comm.h"
 #include "crush_model_error.h"
 #include "error.h"
-#include "fix_crush_materials.h"
+#include "type_materials.h"
 #include "fix_wall_servo.h"
 #include "force.h"
 #include "input_keyword.h"
@@ -146,10 +146,10 @@ void FixDtStiffness::add_pair_contacts()
       const double distance_sq = dx * dx + dy * dy + dz * dz;
       if (distance_sq >= reach * reach) continue;
       const double overlap = reach - std::sqrt(distance_sq);
-      const double dt_term = crush::diameter_term_from_radii(radius[i], radius[j]);
+      const double diameter_term = crush::diameter_term_from_radii(radius[i], radius[j]);
       const crush::HertzMindlinCoefficients &c = coefficients_[type[i] * stride + type[j]];
-      if (i < nlocal) crush::add_contact(stiffness_[i], c, dt_term, overlap);
-      if (j < nlocal) crush::add_contact(stiffness_[j], c, dt_term, overlap);
+      if (i < nlocal) crush::add_contact(stiffness_[i], c, diameter_term, overlap);
+      if (j < nlocal) crush::add_contact(stiffness_[j], c, diameter_term, overlap);
     }
   }
 }

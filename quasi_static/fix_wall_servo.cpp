@@ -14,7 +14,7 @@
 #include "crush_load_ramp.h"
 #include "crush_model_error.h"
 #include "error.h"
-#include "fix_crush_materials.h"
+#include "type_materials.h"
 #include "force.h"
 #include "input_keyword.h"
 #include "hertz_mindlin_scaled_law.h"
@@ -37,7 +37,7 @@ void expect(Error *error, bool ok, const std::string &message)
 
 FixWallServo::FixWallServo(LAMMPS *lmp, int narg, char **arg) :
   Fix(lmp, narg, arg), wall_type_(0), sigma_start_(1e3), sigma_max_(0.0), load_rate_(0.0), sigma_ref_(1e3),
-  target_(0.0), alpha_(0.5), max_step_(0.0), normal_coeff_(NULL), progress_percent_(0.0), ramp_done_(0.0),
+  target_(0.0), alpha_(0.5), max_step_(0.0), progress_percent_(0.0), ramp_done_(0.0),
   next_report_(0.0), ramp_wall_start_(0.0), ramp_started_steps_(0.0), ramp_started_(false), monitor_(lmp)
 {
   expect(error, narg >= 9, "expected 'fix ID group wall/servo xlo xhi ylo yhi zlo zhi type T x MODE y MODE z MODE'");
@@ -108,12 +108,10 @@ FixWallServo::FixWallServo(LAMMPS *lmp, int narg, char **arg) :
   global_freq = 1;
   extvector = 0;
   restart_global = 1;
-  memory->create(normal_coeff_, atom->ntypes + 1, 1, "wall/servo:normal_coeff");
 }
 
 FixWallServo::~FixWallServo()
 {
-  memory->destroy(normal_coeff_);
 }
 
 void FixWallServo::parse_mode(int axis, int narg, char **arg, int &iarg)
@@ -149,9 +147,10 @@ void FixWallServo::init()
 {
   const int ntypes = atom->ntypes;
   try {
+    wall_coefficients_.resize(ntypes + 1);
     for (int t = 1; t <= ntypes; t++)
-      normal_coeff_[t][0] = crush::hertz_mindlin_coefficients(type_shear_material(modify, ntypes, t, style),
-                                                                 type_shear_material(modify, ntypes, wall_type_, style)).normal;
+      wall_coefficients_[t] = crush::hertz_mindlin_coefficients(type_shear_material(modify, ntypes, t, style),
+                                                                type_shear_material(modify, ntypes, wall_type_, style));
   } catch (const crush::ModelError &e) {
     error->all(FLERR, (std::string("fix wall/servo: youngsModulus/poissonsRatio: ") + e.what()).c_str());
   }
@@ -190,7 +189,7 @@ void FixWallServo::apply_contacts(double *force, double *stiffness)
   double **x = atom->x, **f = atom->f;
   const double *radius = atom->radius;
   const int *mask = atom->mask, *type = atom->type;
-  const CrushRecorder *recorder = monitor_.recorder();
+  const ContactLoadRecorder *recorder = monitor_.recorder();
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
     const double r = radius[i];
@@ -222,8 +221,7 @@ void FixWallServo::add_contact_stiffness(std::vector<crush::ContactStiffness> &s
     for (int a = 0; a < 3; a++)
       for (int side = 0; side < 2; side++) {
         const double U = overlap(x[i], radius[i], a, side);
-        // the tangent 1.5 k_N, in the arithmetic order the time-step references were recorded with
-        if (U > 0.0) stiffness[i].translational += 1.5 * normal_coeff_[type[i]][0] * std::sqrt(2.0 * radius[i] * U);
+        if (U > 0.0) stiffness[i].translational += crush::tangent_normal_stiffness(secant_stiffness(type[i], radius[i], U));
       }
   }
 }

@@ -29,7 +29,7 @@ FixStyle(wall/servo,FixWallServo)
 #include "critical_step_law.h"
 #include "servo_wall_law.h"
 #include "fix.h"
-#include "fix_crush_monitor.h"
+#include "contact_load_monitor.h"
 
 namespace LAMMPS_NS {
 
@@ -61,7 +61,10 @@ class FixWallServo : public Fix {
     return r - (side == 0 ? x[a] - wall_[2 * a] : wall_[2 * a + 1] - x[a]);
   }
   // eq. 8 with the wall convention D1 D2/(D1+D2) -> D = 2r: the secant k_N (N/m) at overlap U.
-  double secant_stiffness(int type, double r, double U) const { return normal_coeff_[type][0] * std::sqrt(2.0 * r * U); }
+  double secant_stiffness(int type, double r, double U) const
+  {
+    return crush::contact_stiffness(wall_coefficients_[type], 2.0 * r, U).normal;
+  }
   double area(int axis) const;
   double stress(int axis) const;
   void report_progress();
@@ -77,14 +80,14 @@ class FixWallServo : public Fix {
   crush::StiffnessEstimate sample_stiffness_[3];  // dF/dx of each ramp axis' hi wall
   crush::DriftEstimate drift_[3];                 // average step of each stress axis' hi wall
   double last_move_[3];   // the hi wall's last displacement towards the sample (m)
-  double **normal_coeff_; // per particle type: eq. 8 factor against the wall type
+  std::vector<crush::HertzMindlinCoefficients> wall_coefficients_;  // per particle type, against the wall type
   double progress_percent_;  // 0: no progress lines
   double ramp_done_;         // ramp steps taken
   double next_report_;       // ramp steps at the next progress line
   double ramp_wall_start_;   // MPI_Wtime() at the first ramp step of this run
   double ramp_started_steps_;  // ramp steps taken before it (a restarted run)
   bool ramp_started_;
-  CrushMonitor monitor_;
+  ContactLoadMonitor monitor_;
 };
 
 }  // namespace LAMMPS_NS

@@ -11,7 +11,7 @@ const crush::ShearMaterial kQuartz{3e9, 0.3};  // Table 1
 // A ball of diameter d between two fixed walls, both contacts at overlap U (eq. 8, wall: Dt = d).
 double wall_contact_force(const crush::HertzMindlinCoefficients &c, double d, double U)
 {
-  return U > 0.0 ? crush::normal_stiffness(c, d, U) * U : 0.0;
+  return U > 0.0 ? crush::contact_stiffness(c, d, U).normal * U : 0.0;
 }
 
 // Velocity Verlet (LIGGGHTS' nve/sphere) of that ball, displaced by 'offset' from the middle where

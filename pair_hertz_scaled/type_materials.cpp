@@ -1,5 +1,5 @@
-/* liggghts-crush: elastic constants of an atom type (see fix_crush_materials.h). */
-#include "fix_crush_materials.h"
+/* liggghts-crush: elastic constants of an atom type (see type_materials.h). */
+#include "type_materials.h"
 
 #include "fix_property_global.h"
 #include "modify.h"
@@ -18,7 +18,7 @@ crush::Material type_material(Modify *modify, int ntypes, int type, const char *
 crush::ShearMaterial type_shear_material(Modify *modify, int ntypes, int type, const char *caller)
 {
   const crush::Material m = type_material(modify, ntypes, type, caller);
-  return crush::ShearMaterial{m.youngs_modulus / (2.0 * (1.0 + m.poisson_ratio)), m.poisson_ratio};
+  return crush::shear_material(m.youngs_modulus, m.poisson_ratio);
 }
 
 }  // namespace LAMMPS_NS

@@ -1,11 +1,11 @@
 /* ----------------------------------------------------------------------
    liggghts-crush: the elastic constants of an atom type, read from the youngsModulus and
-   poissonsRatio of fix property/global (peratomtype), for fix crush and fix wall/servo.
+   poissonsRatio of fix property/global (peratomtype), for fix crush, fix wall/servo and fix dt/stiffness.
 ------------------------------------------------------------------------- */
-#ifndef LMP_FIX_CRUSH_MATERIALS_H
-#define LMP_FIX_CRUSH_MATERIALS_H
+#ifndef LMP_TYPE_MATERIALS_H
+#define LMP_TYPE_MATERIALS_H
 
-#include "crush_breakage_limit.h"
+#include "hertz_mindlin_contact_load.h"
 #include "hertz_mindlin_scaled_law.h"
 
 namespace LAMMPS_NS {
