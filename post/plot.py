@@ -10,7 +10,8 @@ folders (or given as files) and writes PNGs to --out (default: the current folde
   fig5_isotropic.png     n against mean stress p', GSD at 100 MPa (Fig. 5a-b)
   fig6_stress_paths.png  q - p' paths and I_G against p' (Fig. 6)
   fig_crushing.png       crushing events and particles against the controlling stress
-  fig_gsd_evolution.png  GSD at 1, 10, 50 and 100 MPa for every N, downscaled (gsd_<O|I><N>_<s>MPa.csv)
+  fig_gsd_evolution.png  GSD before loading (0) and at 1, 10, 50 and 100 MPa for every N, downscaled
+                         (gsd_<O|I><N>_<s>MPa.csv)
 Triaxial curves are labelled with their folder's name, so that runs of one sample with different
 settings (e.g. -var rotation 0 and 1) can be drawn together. Only the figures for which runs were given are drawn. Stresses are plotted in MPa.
 """
@@ -30,7 +31,7 @@ RUN_NAME = re.compile(r"history_([OI])([0-9.]+)\.csv$")
 TRIAXIAL_NAME = re.compile(r"history_T([a-z]+)([0-9.]+)\.csv$")
 GSD_NAME = re.compile(r"gsd_([OI])([0-9.]+)_100MPa\.csv$")
 GSD_LEVEL_NAME = re.compile(r"gsd_([OI])([0-9.]+)_([0-9]+)MPa\.csv$")
-LEVEL_COLOUR = {"1": "tab:blue", "10": "tab:green", "50": "tab:orange", "100": "tab:red"}
+LEVEL_COLOUR = {"0": "black", "1": "tab:blue", "10": "tab:green", "50": "tab:orange", "100": "tab:red"}
 STYLE = {"1": "-", "1.5": "--", "2": ":"}
 
 
@@ -177,12 +178,12 @@ def figure_gsd_evolution(levels, out):
         for (t, n, level), g in sorted(levels.items(), key=lambda item: (item[0][1], float(item[0][2]))):
             if t == test:
                 ax.semilogx(g["size_mm"], g["percent_passing"], STYLE.get(n, "-"), color=LEVEL_COLOUR.get(level),
-                            label="%s, %s MPa" % (label(t, n), level))
+                            label="%s, %s" % (label(t, n), "before loading" if level == "0" else level + " MPa"))
         ax.set_xlabel("particle size / N (mm)")
         ax.set_ylabel("percent passing by mass")
         ax.set_title({"O": "one-dimensional", "I": "isotropic"}[test] + " compression")
         ax.legend(fontsize=7, ncol=2)
-    fig.suptitle("Grading at 1, 10, 50 and 100 MPa, every scale factor (downscaled)")
+    fig.suptitle("Grading before loading and at 1, 10, 50 and 100 MPa, every scale factor (downscaled)")
     return save(fig, out, "fig_gsd_evolution.png")
 
 

@@ -41,7 +41,7 @@ def main(runs):
             "seconds": float(r["seconds"]), "ranks": r["ranks"], "IG0": h[0]["I_G"], "IG": h[-1]["I_G"],
             "n": h[-1]["porosity"], "seed": r["test"].split(":")[1] if ":" in r["test"] else "default"})
     print("| test | seeds | N_i | N_e | events | events / N_i | paper N_i, N_e, events | N_e, events vs paper "
-          "| I_G start -> 100 MPa | n at 100 MPa | runtime |")
+          "| I_G after the first load -> 100 MPa | n at 100 MPa | runtime |")
     print("|---|---|---|---|---|---|---|---|---|---|---|")
     for test in ("O2", "O1.5", "O1", "I2", "I1.5", "I1"):
         if test not in by_test:
