@@ -79,3 +79,8 @@ CASES = {
 
 def tolerance(column):
     return TOLERANCES.get(column, DEFAULT_RELATIVE)
+
+
+if __name__ == "__main__":
+    # The case names, for tests/regression/CMakeLists.txt to register one test each.
+    print(" ".join(CASES))
