@@ -330,10 +330,7 @@ void FixCrush::pre_exchange()
 void FixCrush::replace_mothers()
 {
   // New tags follow every tag in use (and every tag ever given), in the agreed event order.
-  int maxtag = 0, maxtag_all = 0;
-  for (int i = 0; i < atom->nlocal; i++) maxtag = std::max(maxtag, atom->tag[i]);
-  MPI_Allreduce(&maxtag, &maxtag_all, 1, MPI_INT, MPI_MAX, world);
-  const tagint first = std::max(static_cast<tagint>(maxtag_all) + 1, next_tag_);
+  const tagint first = std::max(largest_tag() + 1, next_tag_);
   if (static_cast<bigint>(first) + static_cast<bigint>(nfrag_) * static_cast<bigint>(pending_.size()) > MAXTAGINT)
     error->all(FLERR, "fix crush: particle tags would exceed the largest tag LIGGGHTS allows (MAXTAGINT)");
   log_events(pending_, first);
@@ -410,16 +407,23 @@ void FixCrush::check_books(double added, double replaced) const
   error->all(FLERR, msg);
 }
 
+// The largest tag in use on all processors (0 without particles).
+tagint FixCrush::largest_tag() const
+{
+  int largest = 0, largest_all = 0;  // LIGGGHTS 3.8.0 stores tags as int (atom->tag)
+  for (int i = 0; i < atom->nlocal; i++) largest = std::max(largest, atom->tag[i]);
+  MPI_Allreduce(&largest, &largest_all, 1, MPI_INT, MPI_MAX, world);
+  return largest_all;
+}
+
 // With 'check_tags yes' (tests): every tag in use exactly once over all processors.
 void FixCrush::check_unique_tags() const
 {
-  int maxtag = 0, maxtag_all = 0;
-  for (int i = 0; i < atom->nlocal; i++) maxtag = std::max(maxtag, atom->tag[i]);
-  MPI_Allreduce(&maxtag, &maxtag_all, 1, MPI_INT, MPI_MAX, world);
+  const tagint maxtag_all = largest_tag();
   std::vector<int> seen(maxtag_all + 1, 0), seen_all(maxtag_all + 1, 0);
   for (int i = 0; i < atom->nlocal; i++) seen[atom->tag[i]]++;
   MPI_Allreduce(seen.data(), seen_all.data(), maxtag_all + 1, MPI_INT, MPI_SUM, world);
-  for (int t = 0; t <= maxtag_all; t++)
+  for (tagint t = 0; t <= maxtag_all; t++)
     if (seen_all[t] > 1) {
       char msg[200];
       snprintf(msg, sizeof(msg), "fix crush (check_tags): tag %d is held by %d particles at step " BIGINT_FORMAT,

@@ -77,6 +77,7 @@ class FixCrush : public Fix {
   std::vector<std::pair<std::size_t, int>> owned_mothers() const;
   void check_books(double added, double replaced) const;
   void check_unique_tags() const;
+  tagint largest_tag() const;
   double create_fragments(int mother, tagint first_tag, int generation);
   void delete_mothers(std::vector<int> &mothers);
 

@@ -9,7 +9,7 @@ import shutil
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from liggghts_run import check, printed, read_dump, read_thermo, run_deck  # noqa: E402
+from liggghts_run import check, edited_deck, printed, read_dump, read_thermo, run_deck  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 CRUSH = os.path.join(os.path.dirname(os.path.abspath(__file__)), "crush")
@@ -291,33 +291,18 @@ def case_hard(liggghts, work, which, ranks=1):
 
 def case_particle_lost(liggghts, work):
     """A particle that leaves the box (LIGGGHTS deletes it silently by default) stops the run."""
-    deck_dir = os.path.join(work, "deck")
-    if os.path.isdir(deck_dir):
-        shutil.rmtree(deck_dir)
-    os.makedirs(deck_dir)
-    text = open(SINGLE).read()
-    old = "fix             load all addforce 0.0 0.0 v_push"
-    if old not in text:
-        raise AssertionError("test setup: '%s' not in the single-grain deck" % old)
-    open(os.path.join(deck_dir, "in.single_grain"), "w").write(text.replace(old, "fix             load all addforce 0.0 0.0 1.0"))
-    out = run_deck(liggghts, os.path.join(deck_dir, "in.single_grain"), os.path.join(work, "run"), expect_fail=True)
+    deck = edited_deck(SINGLE, os.path.join(work, "deck"), [("fix             load all addforce 0.0 0.0 v_push",
+                                                              "fix             load all addforce 0.0 0.0 1.0")])
+    out = run_deck(liggghts, deck, os.path.join(work, "run"), expect_fail=True)
     check("1 particles were lost" in out, "the run stops: 'fix crush: 1 particles were lost ...'")
 
 
 def case_time_step_after_event(liggghts, work):
     """Without dmin the time step is checked after every event against the particles present: the
     single grain at a time step fine for it but too large for its fragments stops at the event."""
-    deck_dir = os.path.join(work, "deck")
-    if os.path.isdir(deck_dir):
-        shutil.rmtree(deck_dir)
-    os.makedirs(deck_dir)
-    text = open(SINGLE).read()
-    for old, new in (("timestep        1e-8", "timestep        3e-8"), (" dmin 1.9e-4", "")):
-        if old not in text:
-            raise AssertionError("test setup: '%s' not in the single-grain deck" % old)
-        text = text.replace(old, new)
-    open(os.path.join(deck_dir, "in.single_grain"), "w").write(text)
-    out = run_deck(liggghts, os.path.join(deck_dir, "in.single_grain"), os.path.join(work, "run"), expect_fail=True)
+    deck = edited_deck(SINGLE, os.path.join(work, "deck"),
+                       [("timestep        1e-8", "timestep        3e-8"), (" dmin 1.9e-4", "")])
+    out = run_deck(liggghts, deck, os.path.join(work, "run"), expect_fail=True)
     check("present after crushing" in out and "exceeds" in out,
           "the run stops at the event with the time-step error naming both numbers")
     check("Step" in out, "it ran before the event")
