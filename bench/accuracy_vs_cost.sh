@@ -15,7 +15,7 @@ out=$(mkdir -p "${1:-$here/runs/accuracy}" && cd "${1:-$here/runs/accuracy}" && 
 shift || true
 ranks=${RANKS:-2}
 liggghts=${LIGGGHTS:-$here/build/liggghts}
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
+source "$here/scripts/mpi_env.sh"
 
 # name: N  L_R  dmin (mm, before scaling; 0 = none)  dt_fraction  dt_every  crush_every
 settings="

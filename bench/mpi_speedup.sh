@@ -11,7 +11,7 @@ here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 n=${1:-1.5}
 sigma_max=${SIGMA_MAX:-1e8}
 liggghts=${LIGGGHTS:-$here/build/liggghts}
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
+source "$here/scripts/mpi_env.sh"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 declare -A seconds

@@ -6,7 +6,8 @@
 
 set(_plugin_files "")
 foreach(_dir IN LISTS LIGGGHTS_CRUSH_PLUGIN_DIRS)
-  file(GLOB _f CONFIGURE_DEPENDS "${PROJECT_SOURCE_DIR}/${_dir}/*.cpp" "${PROJECT_SOURCE_DIR}/${_dir}/*.h")
+  file(GLOB _f CONFIGURE_DEPENDS "${PROJECT_SOURCE_DIR}/${_dir}/*.cpp" "${PROJECT_SOURCE_DIR}/${_dir}/*.h"
+                                 "${PROJECT_SOURCE_DIR}/${_dir}/*.whitelist")
   list(APPEND _plugin_files ${_f})
 endforeach()
 
@@ -79,7 +80,61 @@ else()
   message(STATUS "liggghts-crush: serial liggghts with LIGGGHTS' MPI stubs")
 endif()
 
-# VTK: LIGGGHTS 3.8.0 targets VTK <= 8 and Debian 12 ships VTK 9; the VTK dumps are left out
-# (patches/0002) rather than risk a broken build. 'dump custom' output is read by ParaView's
-# LIGGGHTS reader.
-message(STATUS "liggghts-crush: VTK dumps disabled (dump custom/vtk, mesh/vtk unavailable; use dump custom)")
+# VTK dump styles (dump custom/vtk, atom/vtk, custom/vtm, mesh/vtk, mesh/vtm, euler/vtk,
+# decomposition/vtk, local/gran/vtk): LIGGGHTS guards them by LAMMPS_VTK (patches/0002 guards the
+# three it left unguarded); they compile against VTK 9 unchanged, patches/0005 fixes the bugs that
+# running them found and predefines the deck variable liggghts_vtk (1 here, 0 without VTK).
+# LIGGGHTS_CRUSH_VTK: AUTO (default: on when VTK 9 is found), ON (required) or OFF. They need MPI
+# (vtkMPIController), so not with the stubs.
+# Only the sources that use VTK (those mentioning LAMMPS_VTK, and the three that include
+# style_dump.h) are compiled with VTK's headers, in an object library: the other files compile exactly
+# as without VTK (ccache hits across build folders), and only the VTK modules used are linked.
+set(LIGGGHTS_CRUSH_VTK AUTO CACHE STRING "VTK dump styles (dump custom/vtk, ...): AUTO (if VTK 9 is found), ON or OFF")
+set_property(CACHE LIGGGHTS_CRUSH_VTK PROPERTY STRINGS AUTO ON OFF)
+set(LIGGGHTS_CRUSH_HAVE_VTK OFF)
+set(_vtk_why "")
+set(_vtk_hint "install libvtk9-dev (Debian 12: apt-get install libvtk9-dev) and configure again")
+if(NOT LIGGGHTS_CRUSH_VTK)
+  set(_vtk_why "LIGGGHTS_CRUSH_VTK=${LIGGGHTS_CRUSH_VTK}")
+  set(_vtk_hint "configure with -DLIGGGHTS_CRUSH_VTK=AUTO, libvtk9-dev installed")
+elseif(NOT LIGGGHTS_CRUSH_MPI)
+  set(_vtk_why "they need MPI (vtkMPIController) and LIGGGHTS_CRUSH_MPI=OFF")
+  set(_vtk_hint "configure with LIGGGHTS_CRUSH_MPI=ON")
+else()
+  find_package(VTK 9 QUIET COMPONENTS CommonCore CommonDataModel CommonExecutionModel FiltersCore
+               IOLegacy IOXML IOParallelXML ParallelMPI)
+  if(VTK_FOUND)
+    set(LIGGGHTS_CRUSH_HAVE_VTK ON)
+  else()
+    set(_vtk_why "VTK 9 with the modules CommonCore CommonDataModel CommonExecutionModel FiltersCore IOLegacy IOXML IOParallelXML ParallelMPI not found")
+  endif()
+endif()
+if(LIGGGHTS_CRUSH_HAVE_VTK)
+  set(_vtk_sources "")
+  foreach(_s IN LISTS _upstream_sources)
+    file(STRINGS "${_s}" _hit REGEX "LAMMPS_VTK|#include +\"style_dump\\.h\"" LIMIT_COUNT 1)
+    if(_hit)
+      list(APPEND _vtk_sources "${_s}")
+    endif()
+  endforeach()
+  get_target_property(_sources liggghts SOURCES)
+  list(REMOVE_ITEM _sources ${_vtk_sources})
+  set_property(TARGET liggghts PROPERTY SOURCES ${_sources})
+  add_library(liggghts_vtk_dumps OBJECT ${_vtk_sources})
+  add_dependencies(liggghts_vtk_dumps liggghts_plugin_sync)
+  target_compile_definitions(liggghts_vtk_dumps PRIVATE LAMMPS_VTK)
+  target_include_directories(liggghts_vtk_dumps PRIVATE "${LIGGGHTS_SRC}")
+  target_compile_options(liggghts_vtk_dumps PRIVATE -funroll-loops -fstrict-aliasing)
+  target_link_libraries(liggghts_vtk_dumps PUBLIC Eigen3::Eigen MPI::MPI_CXX VTK::CommonCore
+                        VTK::CommonDataModel VTK::CommonExecutionModel VTK::FiltersCore VTK::IOLegacy
+                        VTK::IOXML VTK::IOParallelXML VTK::ParallelMPI)
+  target_link_libraries(liggghts PRIVATE liggghts_vtk_dumps)
+  list(LENGTH _vtk_sources _n)
+  message(STATUS "liggghts-crush: VTK dumps on (dump custom/vtk, ...; VTK ${VTK_VERSION}, ${_n} sources)")
+elseif(LIGGGHTS_CRUSH_VTK AND NOT LIGGGHTS_CRUSH_VTK STREQUAL "AUTO")
+  message(FATAL_ERROR "liggghts-crush: LIGGGHTS_CRUSH_VTK=${LIGGGHTS_CRUSH_VTK} but ${_vtk_why}: "
+                      "${_vtk_hint}, or configure with -DLIGGGHTS_CRUSH_VTK=AUTO or OFF")
+else()
+  message(STATUS "liggghts-crush: VTK dumps off (${_vtk_why}): decks write dump custom only; for "
+                 "dump custom/vtk (ParaView), ${_vtk_hint}")
+endif()

@@ -1,10 +1,11 @@
 # Script mode (cmake -P): copy the plugin folders' files into the LIGGGHTS copy when they differ, and
-# rerun LIGGGHTS' Make.sh (style headers and the contact-model template list) when a header changed.
+# rerun LIGGGHTS' Make.sh (style headers and the contact-model template list) when a header or a
+# whitelist (style_contact_model_user.whitelist: extra contact-model combinations) changed.
 # Arguments: PROJECT_DIR, PLUGIN_DIRS (|-separated), LIGGGHTS_SRC.
 string(REPLACE "|" ";" _dirs "${PLUGIN_DIRS}")
 set(_headers_changed FALSE)
 foreach(_dir IN LISTS _dirs)
-  file(GLOB _files "${PROJECT_DIR}/${_dir}/*.cpp" "${PROJECT_DIR}/${_dir}/*.h")
+  file(GLOB _files "${PROJECT_DIR}/${_dir}/*.cpp" "${PROJECT_DIR}/${_dir}/*.h" "${PROJECT_DIR}/${_dir}/*.whitelist")
   foreach(_f IN LISTS _files)
     get_filename_component(_name "${_f}" NAME)
     set(_dest "${LIGGGHTS_SRC}/${_name}")
@@ -12,7 +13,7 @@ foreach(_dir IN LISTS _dirs)
                     OUTPUT_QUIET ERROR_QUIET)
     if(_differs)
       file(COPY_FILE "${_f}" "${_dest}")
-      if(_name MATCHES "\\.h$")
+      if(_name MATCHES "\\.(h|whitelist)$")
         set(_headers_changed TRUE)
       endif()
     endif()

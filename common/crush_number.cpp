@@ -4,7 +4,6 @@
 #include <cmath>
 #include <cstdlib>
 
-#include "crush_model_error.h"
 
 namespace crush {
 
@@ -15,15 +14,6 @@ bool parse_finite(const std::string &text, double &value)
   if (text.empty() || *end != '\0' || !std::isfinite(v)) return false;
   value = v;
   return true;
-}
-
-double keyword_number(const std::string &command, const std::string &keyword, const std::string &text,
-                      const std::string &expected)
-{
-  double value = 0.0;
-  if (!parse_finite(text, value))
-    throw ModelError(command + ": keyword '" + keyword + "' expects " + expected + ", got '" + text + "'");
-  return value;
 }
 
 }  // namespace crush

@@ -1,4 +1,5 @@
-/* Crushing model (plain C++): the one reader of numbers given to the plugin's commands.
+/* Crushing model (plain C++): the one reader of numbers given to the plugin's commands (through
+   crush_keywords.h).
 
    A keyword's value is accepted only when the whole text is a finite number: strtod alone would
    take "inf", "nan", "1e999" (overflow to inf) and "5x" (trailing text). */
@@ -11,11 +12,6 @@ namespace crush {
 
 // True, with value set, where text is a finite number in full.
 bool parse_finite(const std::string &text, double &value);
-
-// The value of keyword 'keyword' of 'command', or ModelError
-// "<command>: keyword '<keyword>' expects <expected>, got '<text>'" where text is not a finite number.
-double keyword_number(const std::string &command, const std::string &keyword, const std::string &text,
-                      const std::string &expected);
 
 }  // namespace crush
 

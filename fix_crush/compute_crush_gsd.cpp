@@ -21,27 +21,8 @@ using namespace LAMMPS_NS;
 ComputeCrushGsd::ComputeCrushGsd(LAMMPS *lmp, int &iarg, int narg, char **arg) :
   Compute(lmp, iarg, narg, arg), fix_id_(NULL), fix_(NULL), dmax_(0.0)
 {
-  if (narg < iarg + 3 || strcmp(arg[iarg + 1], "sieves") != 0)
-    error->all(FLERR, "compute crush/gsd: expected 'compute ID group crush/gsd fix-ID sieves s1 s2 ... [dmax d]'");
-  fix_id_ = new char[strlen(arg[iarg]) + 1];
-  strcpy(fix_id_, arg[iarg]);
-  iarg += 2;
-  for (; iarg < narg && strcmp(arg[iarg], "dmax") != 0; iarg++) {
-    const double s = keyword_number(error, "compute crush/gsd", "sieves", arg[iarg], "sizes > 0 (m)");
-    if (!(s > 0.0))
-      error->all(FLERR, (std::string("compute crush/gsd: keyword 'sieves' expects sizes > 0 (m), got '") +
-                         arg[iarg] + "'").c_str());
-    if (!sieves_.empty() && s <= sieves_.back())
-      error->all(FLERR, "compute crush/gsd: keyword 'sieves' expects ascending sizes");
-    sieves_.push_back(s);
-  }
-  if (iarg < narg) {
-    if (iarg + 2 != narg ||
-        !((dmax_ = keyword_number(error, "compute crush/gsd", "dmax", arg[iarg + 1], "one size > 0 (m)")) > 0.0))
-      error->all(FLERR, "compute crush/gsd: keyword 'dmax' expects one size > 0 (m), last on the line");
-    iarg += 2;
-  }
-  if (sieves_.empty()) error->all(FLERR, "compute crush/gsd: keyword 'sieves' needs at least one size");
+  compute_input(this, error, [&] { parse_arguments(words(narg, arg), iarg); });
+  iarg = narg;
 
   scalar_flag = vector_flag = 1;
   size_vector = static_cast<int>(sieves_.size()) + 1;
@@ -53,6 +34,28 @@ ComputeCrushGsd::~ComputeCrushGsd()
 {
   delete[] fix_id_;
   delete[] vector;
+}
+
+// fix-ID sieves s1 s2 ... [dmax d]; throws crush::ModelError naming the keyword.
+void ComputeCrushGsd::parse_arguments(const std::vector<std::string> &args, std::size_t first)
+{
+  if (first + 2 >= args.size() || args[first + 1] != "sieves")
+    throw crush::ModelError("expected 'compute ID group crush/gsd fix-ID sieves s1 s2 ... [dmax d]'");
+  fix_id_ = new char[args[first].size() + 1];
+  strcpy(fix_id_, args[first].c_str());
+  crush::KeywordTable t;
+  t.add("sieves", "ascending sizes > 0 (m)", [this, &t](const std::vector<std::string> &w, std::size_t at) {
+    std::size_t read = 0;
+    for (std::size_t k = at + 1; k < w.size() && !t.is_keyword(w[k]); k++, read++) {
+      const double s = t.value("sieves", w, k);
+      if (!(s > 0.0) || (!sieves_.empty() && s <= sieves_.back())) t.fail("sieves", w[k]);
+      sieves_.push_back(s);
+    }
+    if (read == 0) t.fail("sieves", "");
+    return read;
+  }, true);
+  t.number("dmax", "one size > 0 (m)", crush::positive(), dmax_);
+  t.parse(args, first + 1);
 }
 
 void ComputeCrushGsd::init()

@@ -17,6 +17,7 @@ ComputeStyle(crush/gsd,ComputeCrushGsd)
 #ifndef LMP_COMPUTE_CRUSH_GSD_H
 #define LMP_COMPUTE_CRUSH_GSD_H
 
+#include <string>
 #include <vector>
 
 #include "compute.h"
@@ -32,6 +33,7 @@ class ComputeCrushGsd : public Compute {
   void compute_vector();
 
  private:
+  void parse_arguments(const std::vector<std::string> &args, std::size_t first);
   void sum_grains(std::vector<double> &sums) const;
 
   char *fix_id_;

@@ -17,6 +17,7 @@
 #include "crush_model_error.h"
 #include "domain.h"
 #include "error.h"
+#include "input_keyword.h"
 #include "type_materials.h"
 #include "fix_property_atom.h"
 #include "force.h"
@@ -36,14 +37,11 @@ namespace {
 enum Column { STRENGTH = 0, GENERATION = 1, RATIO = 2 };              // per-atom array
 enum Output { EVENTS = 0, REMOVED_VOLUME = 1, LARGEST_RATIO = 2, REPLACE_SECONDS = 3, NOUTPUT = 4 };  // vector
 
-crush::CrushSettings parse(Error *error, int narg, char **arg)
+crush::CrushSettings parse(Fix *fix, Error *error, int narg, char **arg)
 {
-  try {
-    return crush::parse_crush_settings(std::vector<std::string>(arg + 3, arg + narg));
-  } catch (const crush::ModelError &e) {
-    error->all(FLERR, e.what());
-  }
-  return crush::CrushSettings();
+  crush::CrushSettings settings;
+  fix_input(fix, error, [&] { settings = crush::parse_crush_settings(std::vector<std::string>(arg + 3, arg + narg)); });
+  return settings;
 }
 
 // Each particle's F_n / F_lim of this step, load / (pi sigma_lim)^3, into data[i][RATIO]; clears
@@ -68,7 +66,7 @@ double store_ratios(int n, double *load, const double *strength_term, const int 
 
 FixCrush::FixCrush(LAMMPS *lmp, int narg, char **arg) :
   Fix(lmp, narg, arg),
-  settings_(parse(error, narg, arg)),
+  settings_(parse(this, error, narg, arg)),
   strength_(settings_.distribution, settings_.sigma_lim0, settings_.cv, settings_.weibull_m, settings_.seed),
   nfrag_(static_cast<int>(crush::fragment_layout(settings_.layout, 1.0).size())),
   fix_data_(NULL), data_id_(NULL), limit_factor_(NULL), irregular_(NULL), log_(NULL),

@@ -3,9 +3,6 @@
 ------------------------------------------------------------------------- */
 #include "fix_damp_local.h"
 
-#include <cstring>
-#include <string>
-
 #include "atom.h"
 #include "error.h"
 #include "input_keyword.h"
@@ -18,30 +15,15 @@ using namespace FixConst;
 FixDampLocal::FixDampLocal(LAMMPS *lmp, int narg, char **arg) :
   Fix(lmp, narg, arg), alpha_(-1.0), damp_moments_(true)
 {
-  int iarg = 3;
-  while (iarg < narg) {
-    if (strcmp(arg[iarg], "alpha") == 0) {
-      if (iarg + 2 > narg) error->all(FLERR, "fix damp/local: keyword 'alpha' needs a value in [0, 1)");
-      alpha_ = keyword_number(error, "fix damp/local", "alpha", arg[iarg + 1], "a value in [0, 1)");
-      if (alpha_ < 0.0 || alpha_ >= 1.0)
-        error->all(FLERR, "fix damp/local: 'alpha' must be in [0, 1) (PFC's default is 0.7, "
-                          "quasi-static runs of the paper use 0.05)");
-      iarg += 2;
-    } else if (strcmp(arg[iarg], "moments") == 0) {
-      if (iarg + 2 > narg) error->all(FLERR, "fix damp/local: keyword 'moments' needs 'yes' or 'no'");
-      if (strcmp(arg[iarg + 1], "yes") == 0) damp_moments_ = true;
-      else if (strcmp(arg[iarg + 1], "no") == 0) damp_moments_ = false;
-      else error->all(FLERR, "fix damp/local: keyword 'moments' expects 'yes' or 'no'");
-      iarg += 2;
-    } else {
-      const std::string msg = std::string("fix damp/local: unknown keyword '") + arg[iarg] +
-                              "' (expected 'alpha' or 'moments')";
-      error->all(FLERR, msg.c_str());
-    }
-  }
-  if (alpha_ < 0.0) error->all(FLERR, "fix damp/local: keyword 'alpha' is required (a value in [0, 1))");
-  if (damp_moments_ && !atom->torque_flag)
-    error->all(FLERR, "fix damp/local: 'moments yes' needs an atom style with torque (granular)");
+  fix_input(this, error, [&] {
+    crush::KeywordTable t;
+    // PFC's default alpha is 0.7; the quasi-static runs of the paper use 0.05
+    t.number("alpha", "a value in [0, 1)", crush::in_range(0.0, 1.0, false), alpha_, true)
+     .yes_no("moments", damp_moments_);
+    t.parse(words(narg, arg), 3);
+    if (damp_moments_ && !atom->torque_flag)
+      throw crush::ModelError("'moments yes' needs an atom style with torque (granular)");
+  });
 }
 
 int FixDampLocal::setmask()

@@ -25,39 +25,22 @@
 using namespace LAMMPS_NS;
 using namespace FixConst;
 
-namespace {
-void expect(Error *error, bool ok, const std::string &message)
-{
-  if (!ok) error->all(FLERR, ("fix dt/stiffness: " + message).c_str());
-}
-}  // namespace
-
 FixDtStiffness::FixDtStiffness(LAMMPS *lmp, int narg, char **arg) :
   Fix(lmp, narg, arg), fraction_(-1.0), growth_(1.01), dt_max_(1e300), dt_start_(0.0), every_(1),
   stiffening_(false), warned_(false)
 {
-  for (int iarg = 3; iarg < narg; iarg += 2) {
-    const std::string key = arg[iarg];
-    const bool has_value = iarg + 1 < narg;
-    const double value = has_value ? keyword_number(error, "fix dt/stiffness", key, arg[iarg + 1], "a number") : 0.0;
-    if (key == "fraction") {
-      expect(error, has_value && value > 0.0 && value <= 1.0, "keyword 'fraction' expects a value in (0, 1]");
-      fraction_ = value;
-    } else if (key == "every") {
-      expect(error, has_value && value >= 1.0, "keyword 'every' expects a number of steps >= 1");
-      every_ = static_cast<int>(value);
-    } else if (key == "growth") {
-      expect(error, has_value && value > 1.0, "keyword 'growth' expects a factor > 1");
-      growth_ = value;
-    } else if (key == "max") {
-      expect(error, has_value && value > 0.0, "keyword 'max' expects a time step > 0 (s)");
-      dt_max_ = value;
-    } else {
-      expect(error, false, "unknown keyword '" + key + "' (expected fraction, every, growth or max)");
-    }
-  }
-  expect(error, fraction_ > 0.0, "keyword 'fraction' is required (a value in (0, 1], 0.5 is safe)");
-  expect(error, atom->radius_flag && atom->rmass_flag, "needs atom_style granular (radius and mass)");
+  fix_input(this, error, [&] {
+    long every = 1;
+    crush::KeywordTable t;
+    t.number("fraction", "a value in (0, 1] (0.5 is safe)", crush::open_closed(0.0, 1.0), fraction_, true)
+     .integer("every", "a number of steps >= 1", 1, every)
+     .number("growth", "a factor > 1", [](double v) { return v > 1.0; }, growth_)
+     .number("max", "a time step > 0 (s)", crush::positive(), dt_max_);
+    t.parse(words(narg, arg), 3);
+    every_ = static_cast<int>(every);
+  });
+  if (!atom->radius_flag || !atom->rmass_flag)
+    error->fix_error(FLERR, this, "needs atom_style granular (radius and mass)");
   scalar_flag = 1;
   global_freq = 1;
   extscalar = 0;
@@ -71,7 +54,7 @@ int FixDtStiffness::setmask()
 // eq. 8-9 factors of every type pair, from the types' elastic constants.
 void FixDtStiffness::init()
 {
-  expect(error, force->pair && strncmp(force->pair_style, "gran", 4) == 0, "needs pair_style gran");
+  if (!force->pair || strncmp(force->pair_style, "gran", 4) != 0) error->fix_error(FLERR, this, "needs pair_style gran");
   const int ntypes = atom->ntypes;
   coefficients_.assign((ntypes + 1) * (ntypes + 1), crush::HertzMindlinCoefficients{0.0, 0.0});
   try {
@@ -80,7 +63,7 @@ void FixDtStiffness::init()
         coefficients_[a * (ntypes + 1) + b] = crush::hertz_mindlin_coefficients(
             type_shear_material(modify, ntypes, a, style), type_shear_material(modify, ntypes, b, style));
   } catch (const crush::ModelError &e) {
-    error->all(FLERR, (std::string("fix dt/stiffness: youngsModulus/poissonsRatio: ") + e.what()).c_str());
+    error->fix_error(FLERR, this, (std::string("youngsModulus/poissonsRatio: ") + e.what()).c_str());
   }
 }
 

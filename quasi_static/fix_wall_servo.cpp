@@ -4,7 +4,6 @@
 #include "fix_wall_servo.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <cstring>
 #include <string>
@@ -13,6 +12,7 @@
 #include "comm.h"
 #include "crush_load_ramp.h"
 #include "crush_model_error.h"
+#include "crush_number.h"
 #include "error.h"
 #include "type_materials.h"
 #include "force.h"
@@ -28,11 +28,6 @@ using namespace FixConst;
 
 namespace {
 const char *const kAxis = "xyz";
-
-void expect(Error *error, bool ok, const std::string &message)
-{
-  if (!ok) error->all(FLERR, ("fix wall/servo: " + message).c_str());
-}
 }  // namespace
 
 FixWallServo::FixWallServo(LAMMPS *lmp, int narg, char **arg) :
@@ -40,71 +35,18 @@ FixWallServo::FixWallServo(LAMMPS *lmp, int narg, char **arg) :
   target_(0.0), alpha_(0.5), max_step_(0.0), progress_percent_(0.0), ramp_done_(0.0),
   next_report_(0.0), ramp_wall_start_(0.0), ramp_started_steps_(0.0), ramp_started_(false), monitor_(lmp)
 {
-  expect(error, narg >= 9, "expected 'fix ID group wall/servo xlo xhi ylo yhi zlo zhi type T x MODE y MODE z MODE'");
-  const char *const wall_names[6] = {"xlo", "xhi", "ylo", "yhi", "zlo", "zhi"};
-  for (int k = 0; k < 6; k++) wall_[k] = keyword_number(error, "fix wall/servo", wall_names[k], arg[3 + k], "a position (m)");
   for (int a = 0; a < 3; a++) {
-    expect(error, wall_[2 * a + 1] > wall_[2 * a], std::string("the ") + kAxis[a] + "hi wall must lie above the " +
-                                                       kAxis[a] + "lo wall");
     mode_[a] = FIXED;
     value_[a] = 0.0;
     force_[2 * a] = force_[2 * a + 1] = 0.0;
     last_move_[a] = 0.0;
   }
-  int iarg = 9;
-  while (iarg < narg) {
-    const std::string key = arg[iarg];
-    if (key == "type") {
-      expect(error, iarg + 1 < narg, "keyword 'type' expects the wall's atom type");
-      wall_type_ = force->inumeric(FLERR, arg[iarg + 1]);
-      expect(error, wall_type_ >= 1 && wall_type_ <= atom->ntypes, "keyword 'type' expects an atom type 1..ntypes");
-      iarg += 2;
-    } else if (key == "x" || key == "y" || key == "z") {
-      parse_mode(key[0] - 'x', narg, arg, iarg);
-    } else if (key == "ramp") {
-      expect(error, iarg + 3 < narg, "keyword 'ramp' expects sigma_start sigma_max load_rate [sigma_ref]");
-      sigma_start_ = keyword_number(error, "fix wall/servo", "ramp", arg[iarg + 1], "sigma_start (Pa)");
-      sigma_max_ = keyword_number(error, "fix wall/servo", "ramp", arg[iarg + 2], "sigma_max (Pa)");
-      load_rate_ = keyword_number(error, "fix wall/servo", "ramp", arg[iarg + 3], "the load rate L_R");
-      iarg += 4;
-      if (iarg < narg && isdigit(arg[iarg][0]))
-        sigma_ref_ = keyword_number(error, "fix wall/servo", "ramp", arg[iarg++], "sigma_ref (Pa)");
-      expect(error, sigma_start_ > 0.0 && sigma_max_ >= sigma_start_,
-             "keyword 'ramp' expects 0 < sigma_start <= sigma_max (Pa)");
-      try {
-        crush::LoadRamp(load_rate_, sigma_ref_).steps_to_reach(sigma_start_, sigma_start_);
-      } catch (const crush::ModelError &e) {
-        expect(error, false, std::string("keyword 'ramp': ") + e.what());
-      }
-    } else if (key == "alpha") {
-      expect(error, iarg + 1 < narg, "keyword 'alpha' expects a value in (0, 1]");
-      alpha_ = keyword_number(error, "fix wall/servo", key, arg[iarg + 1], "a value in (0, 1]");
-      expect(error, alpha_ > 0.0 && alpha_ <= 1.0, "keyword 'alpha' expects a value in (0, 1]");
-      iarg += 2;
-    } else if (key == "max_step") {
-      expect(error, iarg + 1 < narg, "keyword 'max_step' expects a length > 0 (m)");
-      max_step_ = keyword_number(error, "fix wall/servo", key, arg[iarg + 1], "a length > 0 (m)");
-      expect(error, max_step_ > 0.0, "keyword 'max_step' expects a length > 0 (m)");
-      iarg += 2;
-    } else if (key == "progress") {
-      expect(error, iarg + 1 < narg, "keyword 'progress' expects a percentage in (0, 100]");
-      progress_percent_ = keyword_number(error, "fix wall/servo", key, arg[iarg + 1], "a percentage in (0, 100]");
-      expect(error, progress_percent_ > 0.0 && progress_percent_ <= 100.0,
-             "keyword 'progress' expects a percentage in (0, 100]");
-      iarg += 2;
-    } else {
-      expect(error, false, "unknown keyword '" + key + "' (expected type, x, y, z, ramp, alpha, max_step or progress)");
-    }
-  }
-  expect(error, wall_type_ > 0, "keyword 'type' (the walls' atom type, for their material) is required");
-  for (int a = 0; a < 3; a++)
-    expect(error, mode_[a] != RAMP || load_rate_ > 0.0,
-           std::string("axis ") + kAxis[a] + " is 'ramp' but no 'ramp sigma_start sigma_max load_rate' is given");
+  fix_input(this, error, [&] { parse_arguments(words(narg, arg)); });
   target_ = sigma_start_;
   ramp_steps_ = load_rate_ > 0.0 ? crush::LoadRamp(load_rate_, sigma_ref_).steps_to_reach(sigma_start_, sigma_max_) : 0;
 
   vector_flag = 1;
-  size_vector = 18;
+  size_vector = 20;
   global_freq = 1;
   extvector = 0;
   restart_global = 1;
@@ -114,27 +56,80 @@ FixWallServo::~FixWallServo()
 {
 }
 
-void FixWallServo::parse_mode(int axis, int narg, char **arg, int &iarg)
+// xlo xhi ylo yhi zlo zhi, then the keyword table; throws crush::ModelError naming the keyword.
+void FixWallServo::parse_arguments(const std::vector<std::string> &args)
+{
+  const char *const wall_names[6] = {"xlo", "xhi", "ylo", "yhi", "zlo", "zhi"};
+  if (args.size() < 9)
+    throw crush::ModelError("expected 'fix ID group wall/servo xlo xhi ylo yhi zlo zhi type T x MODE y MODE z MODE'");
+  for (int k = 0; k < 6; k++)
+    if (!crush::parse_finite(args[3 + k], wall_[k]))
+      throw crush::ModelError(std::string("wall ") + wall_names[k] + " expects a position (m), got '" + args[3 + k] + "'");
+  for (int a = 0; a < 3; a++)
+    if (!(wall_[2 * a + 1] > wall_[2 * a]))
+      throw crush::ModelError(std::string("the ") + kAxis[a] + "hi wall must lie above the " + kAxis[a] + "lo wall");
+
+  crush::KeywordTable t;
+  t.add("type", "the walls' atom type 1..ntypes (for their material)",
+        [this, &t](const std::vector<std::string> &w, std::size_t at) {
+    const double v = t.value("type", w, at + 1);
+    if (!(v >= 1.0 && v <= atom->ntypes && v == std::floor(v))) t.fail("type", w[at + 1]);
+    wall_type_ = static_cast<int>(v);
+    return std::size_t(1);
+  }, true);
+  for (int a = 0; a < 3; a++) t.add(std::string(1, kAxis[a]), "fixed, ramp, stress S (Pa, > 0) or velocity V (m/s)",
+                                   [this, &t, a](const std::vector<std::string> &w, std::size_t at) {
+    return read_mode(t, a, w, at);
+  });
+  t.add("ramp", "sigma_start sigma_max load_rate [sigma_ref] (Pa, 0 < sigma_start <= sigma_max)",
+        [this, &t](const std::vector<std::string> &w, std::size_t at) {
+    sigma_start_ = t.value("ramp", w, at + 1);
+    sigma_max_ = t.value("ramp", w, at + 2);
+    load_rate_ = t.value("ramp", w, at + 3);
+    std::size_t read = 3;
+    if (at + 4 < w.size() && !t.is_keyword(w[at + 4])) sigma_ref_ = t.value("ramp", w, at + ++read);
+    if (!(sigma_start_ > 0.0 && sigma_max_ >= sigma_start_)) t.fail("ramp", w[at + 1] + " " + w[at + 2]);
+    crush::LoadRamp(load_rate_, sigma_ref_).steps_to_reach(sigma_start_, sigma_start_);  // checks L_R, sigma_ref
+    return read;
+  });
+  t.add("outputs", "ascending stresses > 0 (Pa)", [this, &t](const std::vector<std::string> &w, std::size_t at) {
+    std::size_t read = 0;
+    for (std::size_t k = at + 1; k < w.size() && !t.is_keyword(w[k]); k++, read++) {
+      const double s = t.value("outputs", w, k);
+      if (!(s > 0.0) || (!outputs_.empty() && s <= outputs_.back())) t.fail("outputs", w[k]);
+      outputs_.push_back(s);
+    }
+    if (read == 0) t.fail("outputs", "");
+    return read;
+  });
+  t.number("alpha", "a value in (0, 1]", crush::open_closed(0.0, 1.0), alpha_)
+   .number("max_step", "a length > 0 (m)", crush::positive(), max_step_)
+   .number("progress", "a percentage in (0, 100]", crush::open_closed(0.0, 100.0), progress_percent_);
+  t.parse(args, 9);
+
+  if (!outputs_.empty() && !(load_rate_ > 0.0))
+    throw crush::ModelError("keyword 'outputs' needs 'ramp sigma_start sigma_max load_rate'");
+  for (int a = 0; a < 3; a++)
+    if (mode_[a] == RAMP && !(load_rate_ > 0.0))
+      throw crush::ModelError(std::string("axis ") + kAxis[a] +
+                              " is 'ramp' but no 'ramp sigma_start sigma_max load_rate' is given");
+}
+
+// x|y|z fixed | ramp | stress S | velocity V
+std::size_t FixWallServo::read_mode(const crush::KeywordTable &t, int axis, const std::vector<std::string> &w,
+                                    std::size_t at)
 {
   const std::string name(1, kAxis[axis]);
-  expect(error, iarg + 1 < narg, "keyword '" + name + "' expects fixed, ramp, stress S or velocity V");
-  const std::string mode = arg[iarg + 1];
-  if (mode == "fixed") {
-    mode_[axis] = FIXED;
-    iarg += 2;
-  } else if (mode == "ramp") {
-    mode_[axis] = RAMP;
-    iarg += 2;
-  } else if (mode == "stress" || mode == "velocity") {
-    expect(error, iarg + 2 < narg, "keyword '" + name + " " + mode + "' expects a value");
-    mode_[axis] = mode == "stress" ? STRESS : VELOCITY;
-    value_[axis] = keyword_number(error, "fix wall/servo", name + " " + mode, arg[iarg + 2],
-                                  mode == "stress" ? "a stress > 0 (Pa)" : "a velocity (m/s)");
-    expect(error, mode == "velocity" || value_[axis] > 0.0, "keyword '" + name + " stress' expects a stress > 0 (Pa)");
-    iarg += 3;
-  } else {
-    expect(error, false, "keyword '" + name + "' expects fixed, ramp, stress S or velocity V, got '" + mode + "'");
+  const std::string mode = at + 1 < w.size() ? w[at + 1] : "";
+  if (mode == "fixed" || mode == "ramp") {
+    mode_[axis] = mode == "fixed" ? FIXED : RAMP;
+    return 1;
   }
+  if (mode != "stress" && mode != "velocity") t.fail(name, mode);
+  mode_[axis] = mode == "stress" ? STRESS : VELOCITY;
+  value_[axis] = t.value(name, w, at + 2);
+  if (mode == "stress" && !(value_[axis] > 0.0)) t.fail(name, mode + " " + w[at + 2]);
+  return 2;
 }
 
 int FixWallServo::setmask()
@@ -152,7 +147,7 @@ void FixWallServo::init()
       wall_coefficients_[t] = crush::hertz_mindlin_coefficients(type_shear_material(modify, ntypes, t, style),
                                                                 type_shear_material(modify, ntypes, wall_type_, style));
   } catch (const crush::ModelError &e) {
-    error->all(FLERR, (std::string("fix wall/servo: youngsModulus/poissonsRatio: ") + e.what()).c_str());
+    error->fix_error(FLERR, this, (std::string("youngsModulus/poissonsRatio: ") + e.what()).c_str());
   }
   if (max_step_ == 0.0) {
     double rmin = 1e300, rmin_all = 0.0;
@@ -304,10 +299,41 @@ double FixWallServo::stress(int axis) const
   return 0.5 * (force_[2 * axis] + force_[2 * axis + 1]) / area(axis);
 }
 
+// The ramp's stops: the output stresses up to sigma_max, and sigma_max.
+std::vector<double> FixWallServo::ramp_stops() const
+{
+  std::vector<double> stops;
+  for (double s : outputs_)
+    if (s < sigma_max_) stops.push_back(s);
+  stops.push_back(sigma_max_);
+  return stops;
+}
+
+// Ramp steps until the target reaches the next stop above it (0: the ramp is done).
+double FixWallServo::steps_to_next_stop() const
+{
+  if (!(load_rate_ > 0.0)) return 0.0;
+  for (double s : ramp_stops())
+    if (s > target_) return static_cast<double>(crush::LoadRamp(load_rate_, sigma_ref_).steps_to_reach(target_, s));
+  return 0.0;
+}
+
+// The last stop the target has reached (0: none yet).
+double FixWallServo::last_stop() const
+{
+  double reached = 0.0;
+  for (double s : ramp_stops())
+    if (load_rate_ > 0.0 && s <= target_) reached = s;
+  return reached;
+}
+
 // [1-6] wall positions, [7-9] stresses sigma_x, sigma_y, sigma_z, [10] ramp target, [11] volume,
-// [12] steps of the whole ramp (eq. 11) from sigma_start to sigma_max, [13-18] the stress on each wall.
+// [12] steps of the whole ramp (eq. 11) from sigma_start to sigma_max, [13-18] the stress on each wall,
+// [19] ramp steps to the next stop (output stress or sigma_max), [20] the last stop reached.
 double FixWallServo::compute_vector(int n)
 {
+  if (n == 18) return steps_to_next_stop();
+  if (n == 19) return last_stop();
   if (n >= 12) return force_[n - 12] / area((n - 12) / 2);
   if (n < 6) return wall_[n];
   if (n < 9) return stress(n - 6);

@@ -8,6 +8,8 @@
      ramp sigma_start sigma_max load_rate [sigma_ref]    (eq. 11, natural log, default 1 kPa)
      alpha a (servo relaxation, default 0.5)   max_step d (m per step, default 1e-3 r_min)
      progress P (a line on the screen every P percent of the ramp's steps, with the time left)
+     outputs s1 s2 ... (Pa: stresses where a deck wants outputs; f_walls[19] gives the ramp steps to
+       the next of them or sigma_max, f_walls[20] the last one reached, so 'run $(f_walls[19])' stops there)
 
    Contacts: the hertz/scaled normal law (eq. 8) with the wall type's material, no friction (smooth
    walls); they feed a fix crush like pair contacts. The hi wall of a controlled axis moves; the lo
@@ -24,9 +26,11 @@ FixStyle(wall/servo,FixWallServo)
 #define LMP_FIX_WALL_SERVO_H
 
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "critical_step_law.h"
+#include "crush_keywords.h"
 #include "servo_wall_law.h"
 #include "fix.h"
 #include "contact_load_monitor.h"
@@ -51,7 +55,8 @@ class FixWallServo : public Fix {
  private:
   enum Mode { FIXED, RAMP, STRESS, VELOCITY };
 
-  void parse_mode(int axis, int narg, char **arg, int &iarg);
+  void parse_arguments(const std::vector<std::string> &args);
+  std::size_t read_mode(const crush::KeywordTable &t, int axis, const std::vector<std::string> &w, std::size_t at);
   void apply_contacts(double *force, double *stiffness);
   void move_walls(const double *force, const double *force_before, const double *stiffness);
   // Overlap (m; <= 0: no contact) of a particle at x of radius r with the lo (side 0) or hi (side 1)
@@ -65,6 +70,9 @@ class FixWallServo : public Fix {
   {
     return crush::contact_stiffness(wall_coefficients_[type], 2.0 * r, U).normal;
   }
+  std::vector<double> ramp_stops() const;
+  double steps_to_next_stop() const;
+  double last_stop() const;
   double area(int axis) const;
   double stress(int axis) const;
   void report_progress();
@@ -75,6 +83,7 @@ class FixWallServo : public Fix {
   int wall_type_;
   double sigma_start_, sigma_max_, load_rate_, sigma_ref_, target_;
   double ramp_steps_;
+  std::vector<double> outputs_;  // output stresses (Pa) at which the ramp stops (outputs keyword)
   double alpha_, max_step_;
   double force_[6];       // compressive force on each wall (N), last step
   crush::StiffnessEstimate sample_stiffness_[3];  // dF/dx of each ramp axis' hi wall

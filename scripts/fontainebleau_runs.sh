@@ -14,7 +14,7 @@ shift || true
 tests=${*:-O2 O1.5 O1 I2 I1.5 I1 Tdense Tloose}
 ranks=${RANKS:-2}
 liggghts=${LIGGGHTS:-$here/build/liggghts}
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
+source "$here/scripts/mpi_env.sh"
 [ -f "$out/runtimes.csv" ] || echo "test,ranks,initial_particles,final_particles,events,seconds" > "$out/runtimes.csv"
 for spec in $tests; do
   t=${spec%%:*}
@@ -32,7 +32,8 @@ for spec in $tests; do
   rm -rf "$dir" && mkdir -p "$dir" && cp "$here"/examples/fontainebleau/in.* "$dir"/
   echo "== $spec: mpirun -np $ranks liggghts -in $deck ${vars[*]}"
   start=$(date +%s%N)
-  (cd "$dir" && mpirun -np "$ranks" "$liggghts" -in "$deck" "${vars[@]}" -log log.liggghts > screen.txt 2>&1)
+  (cd "$dir" && mpirun -np "$ranks" "$liggghts" -in "$deck" "${vars[@]}" -log log.liggghts > screen.txt 2>&1) \
+    || { tail -n 5 "$dir/screen.txt" >&2; echo "$spec failed: $dir/screen.txt" >&2; exit 1; }
   seconds=$(awk -v a="$start" -v b="$(date +%s%N)" 'BEGIN {printf "%.1f", (b - a) / 1e9}')
   grep -E '^(SAMPLE|wall/servo: ramp +(25|50|75|100)\.0)' "$dir/screen.txt" || true
   initial=$(sed -n 's/^SAMPLE N = [^:]*: \([0-9]*\) particles.*/\1/p' "$dir/screen.txt")

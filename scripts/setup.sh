@@ -3,10 +3,12 @@
 # LIGGGHTS 3.8.0 source package (enabling apt source entries derived from this machine's own apt
 # configuration when needed), then configure and build. Idempotent: every step checks before acting.
 #
-#   bash scripts/setup.sh            # packages + source + build, then run the main example
+#   bash scripts/setup.sh            # packages + source + build, install (to ~/.local), then the main
+#                                    # job: O-2 to 100 MPa, its summary and figures
 #   bash scripts/setup.sh --no-run   # packages + source + build
 #   bash scripts/setup.sh --no-build # packages + source only
-# Environment: LIGGGHTS_CRUSH_BUILD_DIR (default ./build), LIGGGHTS_CRUSH_DOWNLOAD_DIR (./.downloads).
+# Environment: LIGGGHTS_CRUSH_BUILD_DIR (default ./build), LIGGGHTS_CRUSH_DOWNLOAD_DIR (./.downloads),
+# LIGGGHTS_CRUSH_PREFIX (install prefix, default ~/.local).
 set -euo pipefail
 
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -25,7 +27,8 @@ say() { printf '[setup] %s\n' "$*"; }
 
 packages=(g++ make cmake ccache patch libopenmpi-dev openmpi-bin libeigen3-dev libgtest-dev
           xz-utils dpkg-dev python3 python3-numpy python3-matplotlib gcovr
-          time)  # GNU time: peak memory in bench/memory.sh and bench/accuracy_vs_cost.sh
+          time   # GNU time: peak memory in bench/memory.sh and bench/accuracy_vs_cost.sh
+          libvtk9-dev python3-vtk9)  # VTK dumps for ParaView (dump custom/vtk, patch 0005); the test reads them
 
 missing=()
 for p in "${packages[@]}"; do
@@ -87,7 +90,25 @@ cmake --build "$build_dir" -j "$(nproc)"
 say "built: $build_dir/liggghts"
 
 [ $do_run -eq 1 ] || exit 0
-say "running the main example: examples/smoke/in.smoke (output in $build_dir/run/smoke)"
-mkdir -p "$build_dir/run/smoke"
-(cd "$build_dir/run/smoke" && "$build_dir/liggghts" -in "$here/examples/smoke/in.smoke")
-say "done"
+
+# --- install: bin/liggghts-crush and a bin/liggghts link, doc pages and examples (cmake/Install.cmake)
+prefix=${LIGGGHTS_CRUSH_PREFIX:-$HOME/.local}
+say "installing into $prefix (cmake --install $build_dir --prefix $prefix)"
+cmake --install "$build_dir" --prefix "$prefix" > "$build_dir/install_manifest.log"
+say "installed $prefix/bin/liggghts-crush and the link $prefix/bin/liggghts; examples in" \
+    "$prefix/share/liggghts-crush/examples, doc pages in $prefix/share/doc/liggghts-crush"
+case ":$PATH:" in
+  *":$prefix/bin:"*) ;;
+  *) say "to type 'liggghts -in in.oedometer': export PATH=\"$prefix/bin:\$PATH\" (add it to ~/.bashrc)" ;;
+esac
+
+# --- the main job: the paper's oedometric test O-2 to 100 MPa, its summary and figures -------------
+ranks=$(( $(nproc) >= 2 ? 2 : 1 ))
+say "running the main job: oedometric test O-2 to 100 MPa on $ranks rank(s), about 2 minutes" \
+    "(scripts/fontainebleau_runs.sh, output in $build_dir/run/O2)"
+RANKS=$ranks LIGGGHTS=$build_dir/liggghts bash "$here/scripts/fontainebleau_runs.sh" "$build_dir/run" O2 \
+  || { say "the O-2 run failed: see $build_dir/run/O2/screen.txt"; exit 1; }
+seconds=$(tail -n 1 "$build_dir/run/runtimes.csv" | cut -d, -f6)
+/usr/bin/python3 "$here/post/summary.py" "$build_dir/run/O2" --figures "$build_dir/run/figures" \
+  --seconds "$seconds" --ranks "$ranks"
+say "done: every deck, its variables and the paper's other tests are in README.md"

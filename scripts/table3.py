@@ -17,10 +17,8 @@ import sys
 
 import numpy as np
 
-PAPER = {  # Table 3: N_i, N_e, events, runtime (min)
-    "O2": (1304, 4372, 236, 31), "O1.5": (3084, 9974, 530, 67), "O1": (10397, 37658, 2097, 183),
-    "I2": (1304, 5230, 302, 29), "I1.5": (3084, 10819, 595, 67), "I1": (10397, 40778, 2337, 203),
-}
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "post"))
+from paper import TABLE3 as PAPER  # noqa: E402  (N_i, N_e, events, runtime in minutes)
 
 
 def history(folder):

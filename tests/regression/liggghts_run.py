@@ -1,5 +1,6 @@
 """Helpers for the deck tests: run the built liggghts on a deck and read its outputs (LIGGGHTS' own
 log and dump formats). Plain Python 3, no third-party modules."""
+import inspect
 import os
 import re
 import shutil
@@ -39,20 +40,25 @@ def run_deck(liggghts, deck, workdir, variables=None, ranks=1, expect_fail=False
     return proc.stdout
 
 
-def edited_deck(deck, folder, replacements):
-    """Copies the deck's folder to folder (afresh) with each (old, new) text replaced in the deck;
-    returns the copied deck's path. A replacement whose text is not in the deck is a test error."""
+def edited_deck(deck, folder, replacements, includes=()):
+    """Copies the deck's folder to folder (afresh) with each (old, new) text replaced in the deck and
+    in the named files it includes, wherever it occurs; returns the copied deck's path. A
+    replacement whose text is in none of them is a test error."""
     if os.path.isdir(folder):
         shutil.rmtree(folder)
     shutil.copytree(os.path.dirname(os.path.abspath(deck)), folder)
-    path = os.path.join(folder, os.path.basename(deck))
-    text = open(path).read()
+    paths = [os.path.join(folder, name) for name in [os.path.basename(deck)] + list(includes)]
+    texts = {path: open(path).read() for path in paths}
     for old, new in replacements:
-        if old not in text:
-            raise AssertionError("test setup: '%s' not in %s" % (old, deck))
-        text = text.replace(old, new)
-    open(path, "w").write(text)
-    return path
+        found = [path for path in paths if old in texts[path]]
+        if not found:
+            raise AssertionError("test setup: '%s' not in %s" % (old.strip(), ", ".join(
+                [os.path.basename(deck)] + list(includes))))
+        for path in found:
+            texts[path] = texts[path].replace(old, new)
+    for path, text in texts.items():
+        open(path, "w").write(text)
+    return paths[0]
 
 
 def printed(output, key):
@@ -100,3 +106,65 @@ def read_dump(path):
     if not snapshots:
         raise AssertionError("no snapshot in dump %s" % path)
     return snapshots
+
+
+SKIPPED = 77  # exit status of a test that cannot run in this build (CTest's SKIP_RETURN_CODE)
+
+
+def skip(reason):
+    """Ends a test that this build cannot run (e.g. VTK output without VTK), as skipped."""
+    print("SKIPPED: " + reason)
+    raise SystemExit(SKIPPED)
+
+
+def variants(*argument_lists, ranks=1, timeout=300, label="regression"):
+    """Marks a case_NAME function of a test script: it is one test per argument list (the values
+    after LIGGGHTS and WORKDIR; none: one test without). An argument named ranks gives the MPI ranks
+    of that test; ranks= gives them for a case that starts its own multi-rank runs. label 'slow'
+    keeps a test out of the default suite."""
+    def mark(function):
+        function.variants = [tuple(str(a) for a in args) for args in argument_lists] or [()]
+        function.ranks, function.timeout, function.label = ranks, timeout, label
+        return function
+    return mark
+
+
+def each_rank_count(*counts):
+    """Argument lists for variants(): one test per rank count."""
+    return [(n,) for n in counts]
+
+
+def listed_tests(namespace):
+    """(name, ranks, timeout, label, case, arguments) of every test of a script's case_ functions."""
+    tests = []
+    for attr, function in sorted(namespace.items()):
+        if not attr.startswith("case_") or not callable(function):
+            continue
+        case = attr[len("case_"):]
+        parameters = list(inspect.signature(function).parameters)[2:]
+        for args in getattr(function, "variants", [()]):
+            bound = dict(zip(parameters, args))
+            ranks = int(bound.get("ranks", getattr(function, "ranks", 1)))
+            words = [a for p, a in zip(parameters, args) if p != "ranks"]
+            name = "_".join([case] + words + (["np%d" % ranks] if "ranks" in bound and ranks > 1 else []))
+            tests.append((name, ranks, getattr(function, "timeout", 300), getattr(function, "label", "regression"),
+                          case, args))
+    return tests
+
+
+def main(namespace, argv):
+    """The command line of every deck-test script:
+         script.py --list                       one test a line: name ranks timeout label case args...
+         script.py LIGGGHTS WORKDIR CASE [ARG ...]   run one (CMake registers the listed ones)"""
+    if argv[:1] == ["--list"]:
+        for name, ranks, timeout, label, case, args in listed_tests(namespace):
+            print(" ".join([name, str(ranks), str(timeout), label, case] + list(args)))
+        return
+    if len(argv) < 3 or "case_" + argv[2] not in namespace:
+        cases = sorted(n[len("case_"):] for n in namespace if n.startswith("case_"))
+        raise SystemExit("usage: %s LIGGGHTS WORKDIR CASE [ARG ...]  (cases: %s) | --list"
+                         % (os.path.basename(namespace.get("__file__", "test")), " ".join(cases)))
+    liggghts, work, case = os.path.abspath(argv[0]), os.path.abspath(argv[1]), argv[2]
+    os.makedirs(work, exist_ok=True)
+    namespace["case_" + case](liggghts, work, *argv[3:])
+    print("PASSED " + " ".join([case] + argv[3:]))

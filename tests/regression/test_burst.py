@@ -3,6 +3,7 @@
 ranks, and a restart written with the replacement still pending (tests/regression/burst/).
 
   python3 test_burst.py LIGGGHTS WORKDIR CASE RANKS     CASE: all, half or restart
+  python3 test_burst.py --list
 
 Every case asserts: every tag unique, particles = initial + 13 x events at every thermo row, the
 volume books to 1e-12, no broken grain left, and the events of the burst step exactly those the
@@ -14,7 +15,8 @@ import shutil
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from liggghts_run import check, read_dump, read_thermo, run_deck  # noqa: E402
+from liggghts_run import check, each_rank_count, read_dump, read_thermo, run_deck, variants  # noqa: E402
+from liggghts_run import main as test_main  # noqa: E402
 
 BURST = os.path.join(os.path.dirname(os.path.abspath(__file__)), "burst")
 CELLS = 12              # grains per box edge: 1728 grains
@@ -110,14 +112,29 @@ def check_run(work, case, ranks, types, thermo_from_restart=False):
     return log, final
 
 
-def case_burst(liggghts, work, case, ranks):
+def burst(liggghts, work, case, ranks):
+    ranks = int(ranks)
     types = run_burst(liggghts, "in.burst", work, case, ranks)
     check_run(work, case, ranks, types)
 
 
+@variants(*each_rank_count(1, 2, 3, 4), timeout=600)
+def case_all(liggghts, work, ranks):
+    """Every grain breaks in the burst step."""
+    burst(liggghts, work, "all", ranks)
+
+
+@variants(*each_rank_count(1, 2, 3, 4), timeout=600)
+def case_half(liggghts, work, ranks):
+    """A random half of the grains (type 2) breaks in the burst step."""
+    burst(liggghts, work, "half", ranks)
+
+
+@variants(*each_rank_count(1, 2, 3, 4), timeout=600)
 def case_restart(liggghts, work, ranks):
     """in.burst writes burst.restart right after the burst step (replacement pending) and goes on;
     in.burst_restart continues from the file: the same events, fragment tags and final particles."""
+    ranks = int(ranks)
     first = os.path.join(work, "uninterrupted")
     types = run_burst(liggghts, "in.burst", first, "half", ranks)
     log, final = check_run(first, "half", ranks, types)
@@ -131,11 +148,4 @@ def case_restart(liggghts, work, ranks):
 
 
 if __name__ == "__main__":
-    liggghts, workdir, case, ranks = sys.argv[1:5]
-    os.makedirs(workdir, exist_ok=True)
-    liggghts, workdir, ranks = os.path.abspath(liggghts), os.path.abspath(workdir), int(ranks)
-    if case == "restart":
-        case_restart(liggghts, workdir, ranks)
-    else:
-        case_burst(liggghts, workdir, case, ranks)
-    print("PASSED burst %s on %d rank(s)" % (case, ranks))
+    test_main(globals(), sys.argv[1:])

@@ -6,11 +6,11 @@ liggghts. Each case asserts a value that would be wrong if the physics were wron
 """
 import math
 import os
-import shutil
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from liggghts_run import check, printed, read_dump, read_thermo, run_deck  # noqa: E402
+from liggghts_run import check, edited_deck, printed, read_dump, read_thermo, run_deck  # noqa: E402
+from liggghts_run import main as test_main  # noqa: E402
 
 HERE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "contact")
 G, NU = 3e9, 0.3                                    # in.materials: E = 7.8e9, nu = 0.3
@@ -155,6 +155,54 @@ def case_rotating_contact(liggghts, work):
           "the same rotation" % loss)
 
 
+def rolling_torques(liggghts, work, rmodel, mu_r):
+    """(step, torque on sphere 1, torque on sphere 2, normal force, shear force) of contact/in.rolling."""
+    out = run_deck(liggghts, deck("in.rolling"), work, {"rmodel": rmodel, "mu_r": mu_r, "out": "rolling.dump"})
+    check("not located in any whitelist" not in out, "%s: a compiled combination (no 'unoptimized' warning)" % rmodel)
+    return [(step, [a["tqx"], a["tqy"], a["tqz"]], [b["tqx"], b["tqy"], b["tqz"]], -a["fx"],
+             math.hypot(a["fy"], a["fz"])) for step, _, (a, b) in read_dump(os.path.join(work, "rolling.dump"))]
+
+
+def case_rolling_resistance(liggghts, work):
+    """LIGGGHTS' rolling_friction with hertz/scaled + mindlin/scaled (compiled as its own instance by
+    pair_hertz_scaled/style_contact_model_user.whitelist, not LIGGGHTS' slower generic path): a
+    frictionless pair, sphere 1 rolling at 100 rad/s about y and twisting at 30 rad/s about the contact
+    normal x. With coefficient 0 (the Fontainebleau decks' preparation) no torque at all. epsd2: an
+    elastic rolling spring k_S R_eff^2 (k_S of eq. 9) on the rolling part only, capped at
+    mu_r R_eff F_n; cdt: mu_r R_eff F_n at once along the relative spin, its torsion part then removed.
+    The two spheres get opposite torques that resist the rolling."""
+    r1, r2, U, mu_r, w_roll, w_twist, dt, start = 1e-4, 1.5e-4, 1e-6, 0.1, 100.0, 30.0, 1e-8, 500
+    Dt = 2 * r1 * r2 / (r1 + r2)
+    r_eff = r1 * r2 / (r1 + r2)
+    Fn = C_NORMAL * math.sqrt(Dt * U) * U
+    cap = mu_r * r_eff * Fn
+    increment = C_SHEAR * math.sqrt(Dt * U) * r_eff ** 2 * w_roll * dt   # epsd2's spring, per step
+    for rmodel in ("epsd2", "cdt"):
+        snaps = rolling_torques(liggghts, os.path.join(work, rmodel), rmodel, mu_r)
+        worst = max(abs(s[3] - Fn) / Fn for s in snaps)
+        check(worst < 1e-10 and all(s[4] == 0.0 for s in snaps),
+              "%s: F_n = %.6g N of eq. 8 (worst relative %.1e), no shear force" % (rmodel, Fn, worst))
+        check(all(s[1] == s[2] == [0.0, 0.0, 0.0] for s in snaps if s[0] <= start),
+              "%s: coefficient 0 for the first %d steps: no torque" % (rmodel, start))
+        late = [s for s in snaps if s[0] > start]
+        check(all(s[1][0] == s[1][2] == 0.0 and s[1][1] < 0.0 and s[2][1] == -s[1][1] for s in late),
+              "%s: the torque on sphere 1 is along -y, against the rolling, none about the normal; sphere 2 "
+              "gets the opposite" % rmodel)
+        if rmodel == "epsd2":
+            n_cap = cap / increment
+            spring = [s for s in late if s[0] - start < 0.9 * n_cap]
+            worst = max(abs(-s[1][1] / ((s[0] - start) * increment) - 1) for s in spring)
+            check(len(spring) >= 5 and worst < 1e-10,
+                  "epsd2: n steps in, the torque is n k_S R_eff^2 w_roll dt (%d snapshots, worst relative %.1e)"
+                  % (len(spring), worst))
+            capped, expected, what = [s for s in late if s[0] - start > 1.1 * n_cap], cap, "mu_r R_eff F_n"
+        else:
+            capped, expected, what = late, cap * w_roll / math.hypot(w_roll, w_twist), "mu_r R_eff F_n w_roll/|w|"
+        worst = max(abs(-s[1][1] / expected - 1) for s in capped)
+        check(len(capped) >= 5 and worst < 1e-10, "%s: then %.6g N m = %s (%d snapshots, worst relative %.1e)"
+              % (rmodel, expected, what, len(capped), worst))
+
+
 def case_impact_energy(liggghts, work):
     """Elastic head-on impact without damping conserves kinetic energy to 1e-4."""
     out = run_deck(liggghts, deck("in.impact"), work)
@@ -167,18 +215,11 @@ def case_impact_restitution(liggghts, work):
     """'viscous_damping on' adds LIGGGHTS' restitution damping: a head-on impact with
     coefficientRestitution 0.5 rebounds at about half its speed (the damping formula is exact for a
     linear spring, close for Hertz)."""
-    src = os.path.join(work, "deck")
-    if os.path.isdir(src):
-        shutil.rmtree(src)
-    shutil.copytree(HERE, src)
-    for name, old, new in (("in.impact", "tangential mindlin/scaled\n", "tangential mindlin/scaled viscous_damping on\n"),
-                           ("in.materials", "peratomtypepair 2 1.0 1.0 1.0 1.0", "peratomtypepair 2 0.5 0.5 0.5 0.5")):
-        path = os.path.join(src, name)
-        text = open(path).read()
-        if old not in text:
-            raise AssertionError("test setup: '%s' not in %s" % (old.strip(), name))
-        open(path, "w").write(text.replace(old, new))
-    out = run_deck(liggghts, os.path.join(src, "in.impact"), os.path.join(work, "run"))
+    src = edited_deck(deck("in.impact"), os.path.join(work, "deck"),
+                      [("tangential mindlin/scaled\n", "tangential mindlin/scaled viscous_damping on\n"),
+                       ("peratomtypepair 2 1.0 1.0 1.0 1.0", "peratomtypepair 2 0.5 0.5 0.5 0.5")],
+                      includes=("in.materials",))
+    out = run_deck(liggghts, src, os.path.join(work, "run"))
     e = printed(out, "VX_AFTER") / 0.1
     check(abs(e - 0.5) < 0.05, "coefficient of restitution %.4f (asked 0.5)" % e)
 
@@ -250,7 +291,8 @@ def case_bad_input(liggghts, work):
            "fix             damp all damp/local alpha ${alpha}\n"
            "fix             grav all gravity 9.81 vector 0.0 0.0 -1.0\n")],
          "fix damp/local must be defined after fix grav"),
-        ("alpha out of range", "in.damping", {"alpha": 1.5}, [], "'alpha' must be in [0, 1)"),
+        ("alpha out of range", "in.damping", {"alpha": 1.5}, [],
+         "keyword 'alpha' expects a value in [0, 1), got '1.5'"),
         ("missing alpha", "in.damping", {"alpha": 0.1},
          [("damp/local alpha ${alpha}", "damp/local")], "keyword 'alpha' is required"),
         ("unknown damping keyword", "in.damping", {"alpha": 0.1},
@@ -272,25 +314,11 @@ def case_bad_input(liggghts, work):
     ]
     for label, name, variables, edits, expected in cases:
         path = os.path.join(work, label.replace(" ", "_"))
-        os.makedirs(path, exist_ok=True)
-        src = os.path.join(path, "deck")
-        if os.path.isdir(src):
-            shutil.rmtree(src)
-        shutil.copytree(HERE, src)
-        target = os.path.join(src, "in.materials" if "oisson" in label else name)
-        text = open(target).read()
-        for old, new in edits:
-            if old not in text:
-                raise AssertionError("test setup: '%s' not in %s" % (old.strip(), target))
-            text = text.replace(old, new)
-        open(target, "w").write(text)
-        out = run_deck(liggghts, os.path.join(src, name), os.path.join(path, "run"), variables,
+        deck = edited_deck(os.path.join(HERE, name), os.path.join(path, "deck"), edits, includes=("in.materials",))
+        out = run_deck(liggghts, deck, os.path.join(path, "run"), variables,
                        expect_fail=True)
         check(expected.lower() in out.lower(), "%s -> error mentions '%s'" % (label, expected))
 
 
 if __name__ == "__main__":
-    liggghts, workdir, case = sys.argv[1:4]
-    os.makedirs(workdir, exist_ok=True)
-    globals()["case_" + case](os.path.abspath(liggghts), os.path.abspath(workdir))
-    print("PASSED " + case)
+    test_main(globals(), sys.argv[1:])

@@ -9,7 +9,8 @@ import shutil
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from liggghts_run import check, edited_deck, printed, read_dump, read_thermo, run_deck  # noqa: E402
+from liggghts_run import check, each_rank_count, edited_deck, printed, read_dump, read_thermo, run_deck, variants  # noqa: E402
+from liggghts_run import main as test_main  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 CRUSH = os.path.join(os.path.dirname(os.path.abspath(__file__)), "crush")
@@ -103,6 +104,7 @@ def case_single_grain_every(liggghts, work):
           % (ratios[every], applied, ratios[1]))
 
 
+@variants(ranks=4)
 def case_single_grain_ranks(liggghts, work):
     """The single-grain case on 1, 2 and 4 ranks (the grain sits on the processor boundary): the
     same tags break at the same step into the same fragment tags."""
@@ -124,6 +126,7 @@ def compression(liggghts, work, ranks):
     return read_thermo(os.path.join(work, "log.liggghts"))
 
 
+@variants(*each_rank_count(1, 2, 4))
 def case_compression(liggghts, work, ranks=1):
     """Compression with crushing on RANKS ranks: the invariants hold at every thermo step; strengths
     are a function of the tag alone (identical to the 1-rank run)."""
@@ -217,32 +220,25 @@ def case_bad_input(liggghts, work):
         ("time step", "timestep        1e-8\n", "timestep        5e-8\n", "exceeds"),
         ("gsd without fix", "compute         gsd all crush/gsd crush", "compute         gsd all crush/gsd nofix",
          "'nofix' is not the ID of a fix crush"),
-        ("infinite strength", "sigma_lim0 2e8", "sigma_lim0 inf", "fix crush: keyword 'sigma_lim0' expects"),
-        ("overflowing dmin", "dmin 0.0001", "dmin 1e999", "fix crush: keyword 'dmin' expects"),
-        ("nan damping", "damp/local alpha 0.1", "damp/local alpha nan", "fix damp/local: keyword 'alpha' expects"),
-        ("nan sieve", "sieves 0.00005", "sieves nan", "compute crush/gsd: keyword 'sieves' expects"),
+        ("infinite strength", "sigma_lim0 2e8", "sigma_lim0 inf", "Fix crush (id crush): keyword 'sigma_lim0' expects"),
+        ("overflowing dmin", "dmin 0.0001", "dmin 1e999", "Fix crush (id crush): keyword 'dmin' expects"),
+        ("nan damping", "damp/local alpha 0.1", "damp/local alpha nan", "Fix damp/local (id damp): keyword 'alpha' expects"),
+        ("nan sieve", "sieves 0.00005", "sieves nan", "Compute crush/gsd (id gsd): keyword 'sieves' expects"),
     ]
     pair_case = ("pair style", "pair_style      gran model hertz/scaled tangential mindlin/scaled",
                  "pair_style      gran model hertz tangential history", "hertz/scaled")
     for label, old, new, expected in cases + [pair_case]:
-        deck_dir = os.path.join(work, label.replace(" ", "_"), "deck")
-        if os.path.isdir(deck_dir):
-            shutil.rmtree(deck_dir)
-        shutil.copytree(CRUSH, deck_dir)
-        edited = False
-        for name in ("in.crush_fixes", "in.compression_setup"):
-            path = os.path.join(deck_dir, name)
-            text = open(path).read()
-            if old in text:
-                open(path, "w").write(text.replace(old, new))
-                edited = True
-        if not edited:
-            raise AssertionError("test setup: '%s' not found" % old.strip())
-        out = run_deck(liggghts, os.path.join(deck_dir, "in.compression"), os.path.join(work, label.replace(" ", "_"), "run"),
+        deck = edited_deck(os.path.join(CRUSH, "in.compression"), os.path.join(work, label.replace(" ", "_"), "deck"),
+                           [(old, new)], includes=("in.crush_fixes", "in.compression_setup"))
+        out = run_deck(liggghts, deck, os.path.join(work, label.replace(" ", "_"), "run"),
                        {"log": "ev.csv", "out": "f.dump"}, expect_fail=True)
         check(expected.lower() in out.lower(), "%s -> error mentions '%s'" % (label, expected))
 
 
+HARD_CASES = ("all_break", "weak", "jump", "corner", "step50", "generations", "periodic", "overlap")
+
+
+@variants(*[(which, ranks) for which in HARD_CASES for ranks in (1, 2, 4)])
 def case_hard(liggghts, work, which, ranks=1):
     """Hard cases (in.hard_cases; corner, generations, periodic: in.hard_<case>): the run ends
     normally, every thermo row keeps the books (particles = initial + 13 x events, particle + removed
@@ -309,7 +305,4 @@ def case_time_step_after_event(liggghts, work):
 
 
 if __name__ == "__main__":
-    liggghts, workdir, case = sys.argv[1:4]
-    os.makedirs(workdir, exist_ok=True)
-    globals()["case_" + case](os.path.abspath(liggghts), os.path.abspath(workdir), *sys.argv[4:])
-    print("PASSED " + case)
+    test_main(globals(), sys.argv[1:])

@@ -3,6 +3,7 @@
 `liggghts -in deck > out.txt 2>&1`, serially and on 2 ranks, without stdbuf (patches/0004).
 
   python3 test_errors.py LIGGGHTS WORKDIR CASE RANKS
+  python3 test_errors.py --list
 
 Cases: event_log (fix crush cannot open its log: error->one on proc 0), time_step (a time step above
 the stable one: error->all), lost (a particle leaves the box), one_rank (an invalid atom type in a
@@ -13,7 +14,8 @@ import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from liggghts_run import check, edited_deck  # noqa: E402
+from liggghts_run import check, each_rank_count, edited_deck, variants  # noqa: E402
+from liggghts_run import main as test_main  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 SINGLE = os.path.join(ROOT, "examples", "single_grain", "in.single_grain")
@@ -43,7 +45,7 @@ run             0
 """
 
 
-def deck_for(case, work):
+def failing_deck(case, work):
     """The failing deck of the case, in work/deck, and the message its error must carry."""
     folder = os.path.join(work, "deck")
     if case == "event_log":
@@ -64,8 +66,9 @@ def deck_for(case, work):
     raise SystemExit("unknown case " + case)
 
 
-def main(liggghts, work, case, ranks):
-    deck, message = deck_for(case, work)
+def check_error(liggghts, work, case, ranks):
+    ranks = int(ranks)
+    deck, message = failing_deck(case, work)
     folder = os.path.dirname(deck)
     launcher = "mpiexec -n %d --oversubscribe " % ranks if ranks > 1 else ""
     os.environ.setdefault("OMPI_ALLOW_RUN_AS_ROOT", "1")
@@ -81,8 +84,25 @@ def main(liggghts, work, case, ranks):
         check("ERROR on proc 1: " + message in out, "raised on proc 1 alone, and named so")
 
 
+@variants(*each_rank_count(1, 2))
+def case_event_log(liggghts, work, ranks):
+    check_error(liggghts, work, "event_log", ranks)
+
+
+@variants(*each_rank_count(1, 2))
+def case_time_step(liggghts, work, ranks):
+    check_error(liggghts, work, "time_step", ranks)
+
+
+@variants(*each_rank_count(1, 2))
+def case_lost(liggghts, work, ranks):
+    check_error(liggghts, work, "lost", ranks)
+
+
+@variants(*each_rank_count(1, 2))
+def case_one_rank(liggghts, work, ranks):
+    check_error(liggghts, work, "one_rank", ranks)
+
+
 if __name__ == "__main__":
-    liggghts, workdir, case, ranks = sys.argv[1:5]
-    os.makedirs(workdir, exist_ok=True)
-    main(os.path.abspath(liggghts), os.path.abspath(workdir), case, int(ranks))
-    print("PASSED errors %s on %s rank(s)" % (case, ranks))
+    test_main(globals(), sys.argv[1:])

@@ -11,7 +11,8 @@ import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from liggghts_run import check, read_dump, run_deck  # noqa: E402
+from liggghts_run import check, each_rank_count, read_dump, run_deck, variants  # noqa: E402
+from liggghts_run import main as test_main  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 DECKS = os.path.join(ROOT, "examples", "fontainebleau")
@@ -70,6 +71,7 @@ def check_books(rows, initial):
     check(all(b["porosity"] < a["porosity"] for a, b in zip(rows, rows[1:])), "porosity falls in every row")
 
 
+@variants(*each_rank_count(1, 2), timeout=600)
 def case_oedometer_short(liggghts, work, ranks=1):
     """O-2 up to 3 MPa with the truncated strength draw (a few events): the prepared sample, the top
     wall following the ramp, K0, the books, the GSD and dump at 1 MPa, and the progress lines. (With
@@ -100,6 +102,7 @@ def case_oedometer_short(liggghts, work, ranks=1):
         plot(work, ["fig4_oedometric.png", "fig6_stress_paths.png", "fig_crushing.png"])
 
 
+@variants(timeout=600)
 def case_isotropic_short(liggghts, work):
     """I-2 up to 3 MPa with the truncated strength draw (a few events): all three hi walls follow the
     ramp, q stays small beside p. (With the decks' default the first-load breakage compacts the sample
@@ -112,6 +115,7 @@ def case_isotropic_short(liggghts, work):
     check_books(rows, N2_PARTICLES)
 
 
+@variants(timeout=600)
 def case_tracking_no_crushing(liggghts, work):
     """O-2 to 5 MPa without crushing, freely rotating grains: the servo alone. The stress measured on
     both walls follows the ramp within 2% and rises in every history row (no oscillation). (With the
@@ -124,6 +128,7 @@ def case_tracking_no_crushing(liggghts, work):
     check(all(b["sigma_z"] > a["sigma_z"] for a, b in zip(rows, rows[1:])), "sigma_z rises in every row")
 
 
+@variants(timeout=600)
 def case_triaxial_short(liggghts, work):
     """Drained triaxial at 100 kPa to 3% axial strain, grains that do not rotate (the decks' default):
     the dense sample is stiffer, stronger and dilates; the loose one (frictional preparation) is
@@ -157,6 +162,28 @@ def case_triaxial_short(liggghts, work):
     plot(work, ["fig3a_triaxial.png"], [os.path.join(work, "dense"), os.path.join(work, "loose")])
 
 
+@variants(timeout=600)
+def case_triaxial_rolling(liggghts, work):
+    """-var rolling epsd2 -var mu_r 0.3 (LIGGGHTS' rolling resistance, in.materials) with freely rotating
+    grains: the sample is prepared exactly as without it (coefficient 0 while preparing), and the
+    rolling torque stiffens and strengthens the sample in the first 1% of axial strain."""
+    runs = {}
+    for name, variables in (("free", {}), ("rolling", {"rolling": "epsd2", "mu_r": 0.3})):
+        variables.update({"axial_max": 0.01, "rotation": 1})
+        out = run_deck(liggghts, os.path.join(DECKS, "in.triaxial"), os.path.join(work, name), variables)
+        log = open(os.path.join(work, name, "log.liggghts")).read()
+        runs[name] = (prepared(out), read_history(os.path.join(work, name, "history_Tdense2.csv")), log)
+    check("rolling_friction epsd2\n" in runs["rolling"][2] and "rolling_friction off\n" in runs["free"][2],
+          "pair style: rolling_friction epsd2, and off without -var rolling")
+    check(runs["rolling"][0] == runs["free"][0], "the same prepared sample (%d particles, porosity %.12f)"
+          % runs["free"][0][:2])
+    free = max(r["q_over_p"] for r in runs["free"][1])
+    rolling = max(r["q_over_p"] for r in runs["rolling"][1])
+    check(rolling > free + 0.1, "q/p up to 1%% axial strain: %.3f with rolling resistance, %.3f without"
+          % (rolling, free))
+
+
+@variants(timeout=600)
 def case_sample_reuse(liggghts, work):
     """in.prepare writes sample_N2.restart; in.oedometer -var reuse 1 starts from it: the same
     particles and porosity, and the test runs on."""
@@ -178,6 +205,7 @@ def read_events(path):
         return [dict(zip(header, line.strip().split(","))) for line in f if line.strip()]
 
 
+@variants(timeout=600)
 def case_strength_clipped(liggghts, work):
     """The three readings of the paper's normal draw with CV = 1 on O-2 to 0.2 MPa (the first load
     steps). normal_clipped_originals (the decks' default, Table 3's reading): the original grains
@@ -207,6 +235,7 @@ def case_strength_clipped(liggghts, work):
     check(truncated < 0.02 * N2_PARTICLES, "normal (truncated): %d events by 0.2 MPa" % truncated)
 
 
+@variants(timeout=1200, label="slow")
 def case_porosity_all_scales(liggghts, work):
     """The samples N = 1.5 and 1 start at 0.39 +- 0.005 too (slow: about 2.5 min)."""
     for n, particles in (("1.5", 3176), ("1", 10720)):
@@ -215,7 +244,4 @@ def case_porosity_all_scales(liggghts, work):
 
 
 if __name__ == "__main__":
-    liggghts, workdir, case = sys.argv[1:4]
-    os.makedirs(workdir, exist_ok=True)
-    globals()["case_" + case](os.path.abspath(liggghts), os.path.abspath(workdir), *sys.argv[4:])
-    print("PASSED " + case)
+    test_main(globals(), sys.argv[1:])
