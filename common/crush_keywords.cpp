@@ -82,6 +82,21 @@ KeywordTable &KeywordTable::yes_no(const std::string &name, bool &target)
   });
 }
 
+KeywordTable &KeywordTable::ascending(const std::string &name, const std::string &expects, std::vector<double> &target,
+                                      bool required)
+{
+  return add(name, expects, [this, name, &target](const std::vector<std::string> &args, std::size_t at) {
+    std::size_t read = 0;
+    for (std::size_t k = at + 1; k < args.size() && !is_keyword(args[k]); k++, read++) {
+      const double v = value(name, args, k);
+      if (!(v > 0.0) || (!target.empty() && v <= target.back())) fail(name, args[k]);
+      target.push_back(v);
+    }
+    if (read == 0) fail(name, "");
+    return read;
+  }, required);
+}
+
 KeywordTable &KeywordTable::text(const std::string &name, const std::string &expects, std::string &target)
 {
   return add(name, expects, [this, name, &target](const std::vector<std::string> &args, std::size_t at) {

@@ -49,6 +49,9 @@ class KeywordTable {
   // One of the given words; target is its index.
   KeywordTable &choice(const std::string &name, const std::vector<std::string> &words, int &target);
   KeywordTable &yes_no(const std::string &name, bool &target);
+  // One or more ascending numbers > 0, up to the next keyword (sieve sizes, output stresses).
+  KeywordTable &ascending(const std::string &name, const std::string &expects, std::vector<double> &target,
+                          bool required = false);
   // One word, stored as given.
   KeywordTable &text(const std::string &name, const std::string &expects, std::string &target);
 

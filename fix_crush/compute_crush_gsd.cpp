@@ -44,16 +44,7 @@ void ComputeCrushGsd::parse_arguments(const std::vector<std::string> &args, std:
   fix_id_ = new char[args[first].size() + 1];
   strcpy(fix_id_, args[first].c_str());
   crush::KeywordTable t;
-  t.add("sieves", "ascending sizes > 0 (m)", [this, &t](const std::vector<std::string> &w, std::size_t at) {
-    std::size_t read = 0;
-    for (std::size_t k = at + 1; k < w.size() && !t.is_keyword(w[k]); k++, read++) {
-      const double s = t.value("sieves", w, k);
-      if (!(s > 0.0) || (!sieves_.empty() && s <= sieves_.back())) t.fail("sieves", w[k]);
-      sieves_.push_back(s);
-    }
-    if (read == 0) t.fail("sieves", "");
-    return read;
-  }, true);
+  t.ascending("sieves", "ascending sizes > 0 (m)", sieves_, true);
   t.number("dmax", "one size > 0 (m)", crush::positive(), dmax_);
   t.parse(args, first + 1);
 }

@@ -92,16 +92,7 @@ void FixWallServo::parse_arguments(const std::vector<std::string> &args)
     crush::LoadRamp(load_rate_, sigma_ref_).steps_to_reach(sigma_start_, sigma_start_);  // checks L_R, sigma_ref
     return read;
   });
-  t.add("outputs", "ascending stresses > 0 (Pa)", [this, &t](const std::vector<std::string> &w, std::size_t at) {
-    std::size_t read = 0;
-    for (std::size_t k = at + 1; k < w.size() && !t.is_keyword(w[k]); k++, read++) {
-      const double s = t.value("outputs", w, k);
-      if (!(s > 0.0) || (!outputs_.empty() && s <= outputs_.back())) t.fail("outputs", w[k]);
-      outputs_.push_back(s);
-    }
-    if (read == 0) t.fail("outputs", "");
-    return read;
-  });
+  t.ascending("outputs", "ascending stresses > 0 (Pa)", outputs_);
   t.number("alpha", "a value in (0, 1]", crush::open_closed(0.0, 1.0), alpha_)
    .number("max_step", "a length > 0 (m)", crush::positive(), max_step_)
    .number("progress", "a percentage in (0, 100]", crush::open_closed(0.0, 100.0), progress_percent_);

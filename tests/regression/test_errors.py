@@ -2,10 +2,10 @@
 """Errors reach the output file and log.liggghts when the output is redirected, as in a batch job:
 `liggghts -in deck > out.txt 2>&1`, serially and on 2 ranks, without stdbuf (patches/0004).
 
-  python3 test_errors.py LIGGGHTS WORKDIR CASE RANKS
+  python3 test_errors.py LIGGGHTS WORKDIR redirected WHICH RANKS
   python3 test_errors.py --list
 
-Cases: event_log (fix crush cannot open its log: error->one on proc 0), time_step (a time step above
+WHICH: event_log (fix crush cannot open its log: error->one on proc 0), time_step (a time step above
 the stable one: error->all), lost (a particle leaves the box), one_rank (an invalid atom type in a
 data file, found only by the proc that owns the atom: on 2 ranks proc 1 raises error->one alone).
 """
@@ -14,7 +14,7 @@ import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from liggghts_run import check, each_rank_count, edited_deck, variants  # noqa: E402
+from liggghts_run import check, edited_deck, variants  # noqa: E402
 from liggghts_run import main as test_main  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
@@ -84,24 +84,9 @@ def check_error(liggghts, work, case, ranks):
         check("ERROR on proc 1: " + message in out, "raised on proc 1 alone, and named so")
 
 
-@variants(*each_rank_count(1, 2))
-def case_event_log(liggghts, work, ranks):
-    check_error(liggghts, work, "event_log", ranks)
-
-
-@variants(*each_rank_count(1, 2))
-def case_time_step(liggghts, work, ranks):
-    check_error(liggghts, work, "time_step", ranks)
-
-
-@variants(*each_rank_count(1, 2))
-def case_lost(liggghts, work, ranks):
-    check_error(liggghts, work, "lost", ranks)
-
-
-@variants(*each_rank_count(1, 2))
-def case_one_rank(liggghts, work, ranks):
-    check_error(liggghts, work, "one_rank", ranks)
+@variants(*[(which, ranks) for which in ("event_log", "time_step", "lost", "one_rank") for ranks in (1, 2)])
+def case_redirected(liggghts, work, which, ranks):
+    check_error(liggghts, work, which, ranks)
 
 
 if __name__ == "__main__":

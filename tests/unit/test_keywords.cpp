@@ -71,27 +71,46 @@ TEST(KeywordTable, ErrorsComeFromTheTable)
   EXPECT_EQ(d.alpha, 0.5);
 }
 
-// A keyword that reads a list up to the next keyword (as compute crush/gsd's sieves).
-TEST(KeywordTable, CustomReaderReadsUpToTheNextKeyword)
+// A list up to the next keyword (compute crush/gsd's sieves, fix wall/servo's outputs).
+TEST(KeywordTable, AscendingListReadsUpToTheNextKeyword)
 {
   std::vector<double> sieves;
   double dmax = 0.0;
   KeywordTable t;
-  t.add("sieves", "ascending sizes > 0 (m)", [&](const std::vector<std::string> &w, std::size_t at) {
-    std::size_t read = 0;
-    for (std::size_t k = at + 1; k < w.size() && !t.is_keyword(w[k]); k++, read++) {
-      const double s = t.value("sieves", w, k);
-      if (!(s > 0.0) || (!sieves.empty() && s <= sieves.back())) t.fail("sieves", w[k]);
-      sieves.push_back(s);
-    }
-    return read;
-  }, true);
-  t.number("dmax", "one size > 0 (m)", positive(), dmax);
+  t.ascending("sieves", "ascending sizes > 0 (m)", sieves, true).number("dmax", "one size > 0 (m)", positive(), dmax);
   t.parse({"sieves", "1e-4", "2e-4", "3e-4", "dmax", "4e-4"});
   EXPECT_EQ(sieves, (std::vector<double>{1e-4, 2e-4, 3e-4}));
   EXPECT_EQ(dmax, 4e-4);
   sieves.clear();
   EXPECT_EQ(error_of(t, {"sieves", "2e-4", "1e-4"}), "keyword 'sieves' expects ascending sizes > 0 (m), got '1e-4'");
+  sieves.clear();
+  EXPECT_EQ(error_of(t, {"sieves", "-1"}), "keyword 'sieves' expects ascending sizes > 0 (m), got '-1'");
+  sieves.clear();
+  EXPECT_EQ(error_of(t, {"sieves", "dmax", "1"}), "keyword 'sieves' expects ascending sizes > 0 (m)");
+}
+
+// A reader of its own (as fix wall/servo's 'x stress S'): it says how many values it read.
+TEST(KeywordTable, CustomReader)
+{
+  int mode = -1;
+  double value = 0.0;
+  KeywordTable t;
+  t.add("x", "fixed or stress S (Pa)", [&](const std::vector<std::string> &w, std::size_t at) {
+    if (at + 1 < w.size() && w[at + 1] == "fixed") {
+      mode = 0;
+      return std::size_t(1);
+    }
+    if (at + 1 >= w.size() || w[at + 1] != "stress") t.fail("x", at + 1 < w.size() ? w[at + 1] : "");
+    mode = 1;
+    value = t.value("x", w, at + 2);
+    return std::size_t(2);
+  });
+  t.parse({"x", "stress", "1e5"});
+  EXPECT_EQ(mode, 1);
+  EXPECT_EQ(value, 1e5);
+  t.parse({"x", "fixed"});
+  EXPECT_EQ(mode, 0);
+  EXPECT_EQ(error_of(t, {"x", "push"}), "keyword 'x' expects fixed or stress S (Pa), got 'push'");
 }
 
 TEST(KeywordTable, Ranges)
