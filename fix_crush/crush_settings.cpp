@@ -35,6 +35,7 @@ CrushSettings parse_crush_settings(const std::vector<std::string> &args)
    .number("fines_dimension", "a fractal dimension < 3", below(3.0), c.fines_dimension)
    .number("rayleigh_fraction", "a fraction in (0, 1]", open_closed(0.0, 1.0), c.rayleigh_fraction)
    .text("log", "a file name", c.log_file)
+   .text("region", "a region ID", c.region_id)
    .yes_no("check_tags", c.check_tags);
   t.parse(args);
   c.seed = static_cast<std::uint64_t>(seed);

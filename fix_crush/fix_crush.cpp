@@ -16,6 +16,7 @@
 #include "crush_fragments.h"
 #include "crush_model_error.h"
 #include "domain.h"
+#include "region.h"
 #include "error.h"
 #include "input_keyword.h"
 #include "type_materials.h"
@@ -69,7 +70,7 @@ FixCrush::FixCrush(LAMMPS *lmp, int narg, char **arg) :
   settings_(parse(this, error, narg, arg)),
   strength_(settings_.distribution, settings_.sigma_lim0, settings_.cv, settings_.weibull_m, settings_.seed),
   nfrag_(static_cast<int>(crush::fragment_layout(settings_.layout, 1.0).size())),
-  fix_data_(NULL), data_id_(NULL), limit_factor_(NULL), irregular_(NULL), log_(NULL),
+  region_(NULL), fix_data_(NULL), data_id_(NULL), limit_factor_(NULL), irregular_(NULL), log_(NULL),
   events_total_(0), removed_volume_(0.0), max_ratio_(0.0), local_max_ratio_(0.0), max_ratio_step_(-1),
   smallest_fragment_diameter_(0.0), initial_largest_diameter_(0.0), next_tag_(1), replace_seconds_(0.0),
   particle_count_(0), initialized_(false), refresh_needed_(true), recording_(true)
@@ -148,6 +149,21 @@ void FixCrush::init()
   fix_data_ = static_cast<FixPropertyAtom *>(
       modify->find_fix_property(data_id_, "property/atom", "vector", 3, 0, style));
   if (settings_.dmin > 0.0) check_time_step(smallest_possible_radius());
+  region_ = NULL;
+  if (!settings_.region_id.empty()) {
+    const int iregion = domain->find_region(settings_.region_id.c_str());
+    if (iregion < 0)
+      error->fix_error(FLERR, this, ("keyword 'region': no region '" + settings_.region_id + "'").c_str());
+    region_ = domain->regions[iregion];
+  }
+}
+
+// Only grains inside the region may break (keyword region): a scene crushes where it needs to.
+bool FixCrush::may_break(int i) const
+{
+  if (2.0 * atom->radius[i] < settings_.dmin) return false;
+  const double *x = atom->x[i];
+  return !region_ || region_->match(x[0], x[1], x[2]);
 }
 
 void FixCrush::check_pair_style() const
@@ -263,14 +279,15 @@ void FixCrush::end_of_step()
   double **data = fix_data_->array_atom;
   array_atom = data;
   const int *mask = atom->mask;
-  const double *radius = atom->radius;
   const double local_max = store_ratios(atom->nlocal, load_.data(), strength_term_.data(), mask, groupbit, data);
   // The mothers, in a second pass: this step's loop stays free of calls, and is skipped when no
   // particle here reached its limit (nearly every step).
   std::vector<int> mothers;
-  if (local_max >= 1.0)
+  if (local_max >= 1.0) {
+    if (region_) region_->prematch();  // a moving region: its position at this step
     for (int i = 0; i < atom->nlocal; i++)
-      if ((mask[i] & groupbit) && data[i][RATIO] >= 1.0 && 2.0 * radius[i] >= settings_.dmin) mothers.push_back(i);
+      if ((mask[i] & groupbit) && data[i][RATIO] >= 1.0 && may_break(i)) mothers.push_back(i);
+  }
   local_max_ratio_ = local_max;
   max_ratio_step_ = -1;  // reduced over processors when output asks for it, not every step
   // One reduction: the events, and the particle count, so that particles lost through the box

@@ -78,12 +78,14 @@ class FixCrush : public Fix {
   void check_books(double added, double replaced) const;
   void check_unique_tags() const;
   tagint largest_tag() const;
+  bool may_break(int i) const;
   double create_fragments(int mother, tagint first_tag, int generation);
   void delete_mothers(std::vector<int> &mothers);
 
   crush::CrushSettings settings_;
   crush::StrengthDraw strength_;
   const int nfrag_;                  // fragments per event (layout)
+  class Region *region_;             // keyword region (NULL: everywhere)
   class FixPropertyAtom *fix_data_;  // per atom: sigma_lim (Pa), generation, last F_n/F_lim
   char *data_id_;
   ContactLoadRecorder recorder_;

@@ -180,6 +180,48 @@ def case_compression(liggghts, work, ranks=1):
                                          "runs are identical" % len(common))
 
 
+@variants(*each_rank_count(1, 2))
+def case_region(liggghts, work, ranks):
+    """fix crush ... region lower: the compression breaks grains below z = 3.6 lattice spacings only
+    (between two grain layers all run long: the box shrinks about its centre, 4 spacings), where
+    without the region it breaks them on both sides; the books hold as always."""
+    ranks = int(ranks)
+    middle = 3.6 * 0.00021
+    full = compression(liggghts, os.path.join(work, "everywhere"), ranks)
+    everywhere = read_events(os.path.join(work, "everywhere", "events.csv"))
+    check(any(float(e["z"]) > middle for e in everywhere) and any(float(e["z"]) < middle for e in everywhere),
+          "without a region, grains break on both sides (%d events)" % len(everywhere))
+    deck = edited_deck(os.path.join(CRUSH, "in.compression"), os.path.join(work, "deck"),
+                       [("fix             crush all crush", "region          lower block INF INF INF INF INF %.17g units box\n"
+                         "fix             crush all crush" % middle),
+                        ("dmin 0.0001 log ${log}", "dmin 0.0001 log ${log} region lower")],
+                       includes=("in.crush_fixes",))
+    run_deck(liggghts, deck, os.path.join(work, "lower"), {"log": "events.csv", "out": "final.dump"}, ranks=ranks)
+    thermo = read_thermo(os.path.join(work, "lower", "log.liggghts"))
+    lower = read_events(os.path.join(work, "lower", "events.csv"))
+    check(len(lower) > 0 and all(float(e["z"]) < middle for e in lower),
+          "with region lower: %d events, every one below z = %.5g m" % (len(lower), middle))
+    check(len(lower) < len(everywhere), "fewer than without the region (%d)" % full[-1]["crush[1]"])
+    check(all(row["Atoms"] == N0 + 13 * row["crush[1]"] for row in thermo), "particles = 512 + 13 x events")
+
+
+def case_tip_example(liggghts, work):
+    """examples/tip: with its region following the tip, every event lies within 1.5 tip radii of
+    the tip's axis; without the region (reach 0) the same push breaks more grains, some far away."""
+    tip = os.path.join(ROOT, "examples", "tip", "in.tip")
+    axis, reach = (0.00105, 0.00105), 1.5 * 0.0004
+
+    def distances(folder, variables):
+        run_deck(liggghts, tip, os.path.join(work, folder), variables)
+        events = read_events(os.path.join(work, folder, "tip_events.csv"))
+        return [math.hypot(float(e["x"]) - axis[0], float(e["y"]) - axis[1]) for e in events]
+    near, everywhere = distances("region", {}), distances("everywhere", {"reach": 0})
+    check(len(near) >= 10 and max(near) <= reach,
+          "region: %d events, all within %.2g mm of the tip's axis" % (len(near), reach * 1e3))
+    check(len(everywhere) > len(near) and max(everywhere) > reach,
+          "no region: %d events, up to %.2g mm away" % (len(everywhere), max(everywhere) * 1e3))
+
+
 def case_restart(liggghts, work):
     """write_restart in the middle of crushing, read_restart, continue: the same strengths, counters,
     removed volume and event numbering as the uninterrupted run (here bit for bit)."""
@@ -224,6 +266,8 @@ def case_bad_input(liggghts, work):
         ("overflowing dmin", "dmin 0.0001", "dmin 1e999", "Fix crush (id crush): keyword 'dmin' expects"),
         ("nan damping", "damp/local alpha 0.1", "damp/local alpha nan", "Fix damp/local (id damp): keyword 'alpha' expects"),
         ("nan sieve", "sieves 0.00005", "sieves nan", "Compute crush/gsd (id gsd): keyword 'sieves' expects"),
+        ("missing region", "dmin 0.0001 log ${log}", "dmin 0.0001 log ${log} region nowhere",
+         "Fix crush (id crush): keyword 'region': no region 'nowhere'"),
     ]
     pair_case = ("pair style", "pair_style      gran model hertz/scaled tangential mindlin/scaled",
                  "pair_style      gran model hertz tangential history", "hertz/scaled")
