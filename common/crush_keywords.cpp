@@ -16,7 +16,6 @@ Accept in_range(double low, double high, bool high_closed)
   return [=](double v) { return v >= low && (high_closed ? v <= high : v < high); };
 }
 Accept open_closed(double low, double high) { return [=](double v) { return v > low && v <= high; }; }
-Accept any_number() { return [](double) { return true; }; }
 
 KeywordTable &KeywordTable::add(const std::string &name, const std::string &expects, Reader read, bool required)
 {

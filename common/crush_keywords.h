@@ -28,7 +28,6 @@ Accept at_least(double low);                              // >= low
 Accept below(double high);                                // < high
 Accept in_range(double low, double high, bool high_closed);  // [low, high] or [low, high)
 Accept open_closed(double low, double high);              // (low, high]
-Accept any_number();
 
 class KeywordTable {
  public:

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <cstdlib>
 
-
 namespace crush {
 
 bool parse_finite(const std::string &text, double &value)
