@@ -1,6 +1,8 @@
 /* Crushing model (plain C++): fix crush settings (see crush_settings.h). */
 #include "crush_settings.h"
 
+#include <cmath>
+
 #include "crush_breakage_limit.h"
 #include "crush_model_error.h"
 #include "crush_keywords.h"
@@ -25,7 +27,17 @@ CrushSettings parse_crush_settings(const std::vector<std::string> &args)
    .integer("seed", "a positive integer", 1, seed, true)
    .number("scale", "an upscaling factor N > 0", positive(), c.scale_factor)
    .number("dmin", "a diameter >= 0 (m)", at_least(0.0), c.dmin)
-   .integer("every", "an integer >= 1", 1, every)
+   .add("every", "an integer >= 1 or 'adaptive'", [&](const std::vector<std::string> &w, std::size_t at) {
+     if (at + 1 < w.size() && w[at + 1] == "adaptive") {
+       c.adaptive = true;
+       return std::size_t(1);
+     }
+     const double v = t.value("every", w, at + 1);
+     if (!(v >= 1.0) || v > 1e9 || v != std::floor(v)) t.fail("every", w[at + 1]);
+     c.adaptive = false;
+     every = static_cast<long>(v);
+     return std::size_t(1);
+   })
    .choice("orientation", {"random", "fixed"}, orientation)
    // the order of StrengthDistribution and FragmentLayout
    .choice("distribution", {"normal", "normal_clipped", "normal_clipped_originals", "weibull", "constant"},

@@ -28,6 +28,7 @@ struct CrushSettings {
   double scale_factor = 1.0;     // N, the upscaling factor (sec. 2.4)
   double dmin = 0.0;             // m, comminution limit: smaller particles never break (0: none)
   int every = 1;                 // check for breakage every this many steps
+  bool adaptive = false;         // 'every adaptive': check only when a bound says a grain may break
   bool random_orientation = true;
   StrengthDistribution distribution = StrengthDistribution::normal;
   bool size_effect = true;

@@ -12,6 +12,7 @@
 #include "atom_vec.h"
 #include "comm.h"
 #include "crush_breakage_limit.h"
+#include "crush_check_bound.h"
 #include "crush_constants.h"
 #include "crush_fragments.h"
 #include "crush_model_error.h"
@@ -35,8 +36,7 @@ using namespace FixConst;
 
 namespace {
 
-enum Column { STRENGTH = 0, GENERATION = 1, RATIO = 2 };              // per-atom array
-enum Output { EVENTS = 0, REMOVED_VOLUME = 1, LARGEST_RATIO = 2, REPLACE_SECONDS = 3, NOUTPUT = 4 };  // vector
+enum Output { EVENTS = 0, REMOVED_VOLUME = 1, LARGEST_RATIO = 2, REPLACE_SECONDS = 3, CHECKED_STEPS = 4, NOUTPUT = 5 };  // vector
 
 crush::CrushSettings parse(Fix *fix, Error *error, int narg, char **arg)
 {
@@ -56,7 +56,7 @@ double store_ratios(int n, double *load, const double *strength_term, const int 
   for (int i = 0; i < n; i++) {
     const double ratio = crush::force_ratio(load[i], strength_term[i]);
     load[i] = 0.0;
-    data[i][RATIO] = ratio;
+    data[i][FixCrush::RATIO] = ratio;
     const double counted = (mask[i] & groupbit) ? ratio : 0.0;
     largest = counted > largest ? counted : largest;
   }
@@ -73,7 +73,8 @@ FixCrush::FixCrush(LAMMPS *lmp, int narg, char **arg) :
   region_(NULL), fix_data_(NULL), data_id_(NULL), limit_factor_(NULL), irregular_(NULL), log_(NULL),
   events_total_(0), removed_volume_(0.0), max_ratio_(0.0), local_max_ratio_(0.0), max_ratio_step_(-1),
   smallest_fragment_diameter_(0.0), initial_largest_diameter_(0.0), next_tag_(1), replace_seconds_(0.0),
-  particle_count_(0), initialized_(false), refresh_needed_(true), recording_(true)
+  particle_count_(0), initialized_(false), refresh_needed_(true), recording_(true), box_reference_{0.0, 0.0, 0.0},
+  allowed_displacement_(0.0), force_check_(true), check_now_(true), checked_steps_(0)
 {
   if (!atom->radius_flag || !atom->rmass_flag || !atom->density_flag)
     error->all(FLERR, "fix crush needs 'atom_style granular' (radius, mass and density per atom)");
@@ -145,6 +146,7 @@ void FixCrush::init()
     error->all(FLERR, "fix crush needs 'newton off': each particle must see all of its contacts");
   check_pair_style();
   setup_limit_factors();
+  if (settings_.adaptive) find_moving_walls();
   initialized_ = true;
   fix_data_ = static_cast<FixPropertyAtom *>(
       modify->find_fix_property(data_id_, "property/atom", "vector", 3, 0, style));
@@ -179,11 +181,15 @@ void FixCrush::check_pair_style() const
 void FixCrush::setup_limit_factors()
 {
   const int ntypes = atom->ntypes;
+  ratio_coefficient_.assign(ntypes + 1, 0.0);
   for (int a = 1; a <= ntypes; a++)
     for (int b = 1; b <= ntypes; b++) {
       try {
         limit_factor_[a][b] = crush::limit_factor(crush::effective_modulus(type_material(modify, ntypes, a, style),
                                                                            type_material(modify, ntypes, b, style)));
+        const double normal = crush::hertz_mindlin_coefficients(type_shear_material(modify, ntypes, a, style),
+                                                                type_shear_material(modify, ntypes, b, style)).normal;
+        ratio_coefficient_[a] = std::max(ratio_coefficient_[a], crush::ratio_coefficient(normal, limit_factor_[a][b]));
       } catch (const crush::ModelError &e) {
         const std::string msg = std::string("fix crush: youngsModulus/poissonsRatio: ") + e.what();
         error->all(FLERR, msg.c_str());
@@ -233,26 +239,39 @@ void FixCrush::pre_force(int)
   if (!initialized_)
     error->all(FLERR, "fix crush was defined after the last full run setup ('run ... pre no'): run once "
                       "with 'pre yes' (or 'run 0') after defining it");
+  const bool renumbered = refresh_needed_ || neighbor->ago == 0;
+  if (renumbered) {
+    refresh_recorder();
+    draw_missing_strengths();
+    update_strength_terms();
+    if (settings_.adaptive) update_ratio_growth();
+  }
+  check_now_ = decide_check(renumbered);
   record_on_check_steps();
-  if (!refresh_needed_ && neighbor->ago != 0) return;
-  refresh_recorder();
-  draw_missing_strengths();
-  update_strength_terms();
+  if (check_now_ && settings_.adaptive) store_check_reference();
 }
 
 // With 'every' > 1 the contact models record loads only on the steps that are checked: on the
 // others the recorder is detached, and the per-contact cost is that of no fix crush at all.
 void FixCrush::record_on_check_steps()
 {
-  const bool record = is_check_step();
-  if (record == recording_) return;
-  ContactLoadMonitor::attach(lmp, record ? &recorder_ : NULL);
-  recording_ = record;
+  if (check_now_ == recording_) return;
+  ContactLoadMonitor::attach(lmp, check_now_ ? &recorder_ : NULL);
+  recording_ = check_now_;
 }
 
-bool FixCrush::is_check_step() const
+// 'every N': every N-th step. 'every adaptive': after atoms were renumbered or created (reneighboring),
+// at a run's first step, and whenever a body moved far enough since the last check that a grain
+// might have reached its limit (crush_check_bound.h): the same steps find the same events as
+// 'every 1'.
+bool FixCrush::decide_check(bool renumbered)
 {
-  return update->ntimestep % settings_.every == 0;
+  if (!settings_.adaptive) return update->ntimestep % settings_.every == 0;
+  if (renumbered || force_check_) {
+    force_check_ = false;
+    return true;
+  }
+  return largest_displacement() >= allowed_displacement_;
 }
 
 // 1 / (pi sigma_lim)^3 per local atom, so that each step's check multiplies instead of divides.
@@ -270,12 +289,14 @@ void FixCrush::setup(int)
 {
   draw_missing_strengths();
   refresh_needed_ = true;
+  force_check_ = true;
 }
 
 void FixCrush::end_of_step()
 {
   // Nothing was recorded on the other steps: the ratios stay those of the last check.
-  if (!is_check_step()) return;
+  if (!check_now_) return;
+  checked_steps_++;
   double **data = fix_data_->array_atom;
   array_atom = data;
   const int *mask = atom->mask;
@@ -289,7 +310,8 @@ void FixCrush::end_of_step()
       if ((mask[i] & groupbit) && data[i][RATIO] >= 1.0 && may_break(i)) mothers.push_back(i);
   }
   local_max_ratio_ = local_max;
-  max_ratio_step_ = -1;  // reduced over processors when output asks for it, not every step
+  max_ratio_step_ = -1;
+  if (settings_.adaptive) schedule_next_check();  // reduced over processors when output asks for it, not every step
   // One reduction: the events, and the particle count, so that particles lost through the box
   // (which LIGGGHTS deletes silently by default) stop the run instead of unbalancing the books.
   bigint local_counts[2] = {static_cast<bigint>(mothers.size()), atom->nlocal}, counts[2];
@@ -578,6 +600,7 @@ double FixCrush::compute_vector(int n)
     }
     return max_ratio_;
   }
+  if (n == CHECKED_STEPS) return static_cast<double>(checked_steps_);
   return replace_seconds_;
 }
 

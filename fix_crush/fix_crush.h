@@ -47,6 +47,8 @@ class FixCrush : public Fix {
   void write_restart(FILE *);
   void restart(char *);
 
+  enum Column { STRENGTH = 0, GENERATION = 1, RATIO = 2 };  // per-atom array (f_crush[i][1..3])
+
   // For compute crush/gsd.
   const crush::CrushSettings &settings() const { return settings_; }
   double removed_volume() const { return removed_volume_; }
@@ -65,7 +67,12 @@ class FixCrush : public Fix {
   void setup_limit_factors();
   void refresh_recorder();
   void record_on_check_steps();
-  bool is_check_step() const;
+  bool decide_check(bool renumbered);
+  void find_moving_walls();
+  void update_ratio_growth();
+  void store_check_reference();
+  double largest_displacement() const;
+  void schedule_next_check();
   void draw_missing_strengths();
   void update_strength_terms();
   void check_time_step(double smallest_radius) const;
@@ -92,6 +99,17 @@ class FixCrush : public Fix {
   double **limit_factor_;        // per type pair: (4 E'/3)^2
   std::vector<double> load_;         // per local and ghost atom: largest F_n (4 E'/3)^2 / r'^2 this step
   std::vector<double> strength_term_;  // per local atom: 1 / (pi sigma_lim)^3 (Pa^-3), at reneighboring
+  // 'every adaptive' (crush_check_bound.h)
+  std::vector<double> ratio_coefficient_;  // per type: the largest K over the types it may touch
+  std::vector<double> ratio_growth_;       // per local atom: growth_i (0: never breaks), at reneighboring
+  std::vector<double> reference_x_;        // per local atom: its position at the last check
+  std::vector<double> wall_reference_;     // the fix wall/servo walls' positions at the last check
+  std::vector<class Fix *> walls_;         // the fix wall/servo instances
+  double box_reference_[3];
+  double allowed_displacement_;            // D below which no grain can reach its limit
+  bool force_check_;                       // check the next step (run start)
+  bool check_now_;                         // this step is checked
+  bigint checked_steps_;
   class Irregular *irregular_;
   FILE *log_;
 

@@ -199,6 +199,39 @@ def case_sample_reuse(liggghts, work):
     check(rows[-1]["sigma_target"] > 1.5e6 and rows[-1]["events"] > 0, "the test ran on and crushed grains")
 
 
+@variants(*each_rank_count(1, 2), timeout=900)
+def case_adaptive_check_exact(liggghts, work, ranks):
+    """fix crush 'every adaptive' against 'every 1' on O-2: the same events at the same steps and the
+    same history to the last digit. With the decks' draw to 2 MPa (about 240 events, most in bursts
+    of dozens in one step; the unloaded grains of zero strength that draw leaves keep every step
+    checked) and with the truncated normal draw to 10 MPa (about 17 events), where the bound lets
+    the check skip steps. The deck prints f_crush[5], the steps checked, at its end."""
+    def compare(name, variables, least_events):
+        counts = {}
+        for every in ("1", "adaptive"):
+            folder = os.path.join(work, name, every)
+            out = run_deck(liggghts, os.path.join(DECKS, "in.oedometer"), folder, dict(variables, crush_every=every),
+                           ranks=int(ranks))
+            m = re.findall(r"^CHECKED STEPS (\d+) OF (\d+)", out, re.M)
+            check(m, "the deck printed the steps checked")
+            counts[every] = tuple(map(int, m[-1]))
+        texts = {}
+        for every in ("1", "adaptive"):
+            for kind in ("events", "history"):
+                with open(os.path.join(work, name, every, "%s_O2.csv" % kind)) as f:
+                    texts[every, kind] = f.read()
+        events = texts["1", "events"].count("\n") - 1
+        check(events >= least_events, "%s: %d events with 'every 1'" % (name, events))
+        check(texts["adaptive", "events"] == texts["1", "events"],
+              "%s: 'every adaptive' logged the same %d events at the same steps as 'every 1'" % (name, events))
+        check(texts["adaptive", "history"] == texts["1", "history"], "%s: the same history, digit for digit" % name)
+        check(counts["1"][0] == counts["1"][1] == counts["adaptive"][1], "%s: 'every 1' checked every step" % name)
+        return counts["adaptive"]
+
+    compare("decks_draw", {"sigma_max": 2e6}, 150)
+    checked, steps = compare("normal_draw", {"sigma_max": 1e7, "distribution": "normal"}, 10)
+    check(checked < 0.85 * steps, "'every adaptive' checked %d of %d steps" % (checked, steps))
+
 def read_events(path):
     with open(path) as f:
         header = f.readline().strip().split(",")

@@ -43,6 +43,7 @@ TEST(CrushSettings, RequiredAndDefaults)
   EXPECT_EQ(c.scale_factor, 1.0);
   EXPECT_EQ(c.dmin, 0.0);
   EXPECT_EQ(c.every, 1);
+  EXPECT_FALSE(c.adaptive);
   EXPECT_TRUE(c.random_orientation);
   EXPECT_EQ(c.distribution, StrengthDistribution::normal);
   EXPECT_TRUE(c.size_effect);
@@ -84,7 +85,11 @@ TEST(CrushSettings, ErrorsNameTheKeywordAndTheExpectedValue)
   EXPECT_NE(error_of(with({"d0", "abc"})).find("got 'abc'"), std::string::npos);
   EXPECT_NE(error_of(with({"scale", "0"})).find("'scale' expects an upscaling factor N > 0"), std::string::npos);
   EXPECT_NE(error_of(with({"dmin", "-1"})).find("'dmin'"), std::string::npos);
-  EXPECT_NE(error_of(with({"every", "1.5"})).find("'every' expects an integer >= 1"), std::string::npos);
+  EXPECT_NE(error_of(with({"every", "1.5"})).find("'every' expects an integer >= 1 or 'adaptive', got '1.5'"),
+            std::string::npos);
+  EXPECT_NE(error_of(with({"every", "0"})).find("got '0'"), std::string::npos);
+  EXPECT_NE(error_of(with({"every"})).find("'every' expects"), std::string::npos);
+  EXPECT_TRUE(parse_crush_settings(with({"every", "adaptive"})).adaptive);
   EXPECT_NE(error_of(with({"orientation", "up"})).find("'random' or 'fixed'"), std::string::npos);
   EXPECT_NE(error_of(with({"distribution", "lognormal"})).find("'normal', 'normal_clipped', 'normal_clipped_originals', 'weibull' or 'constant'"),
             std::string::npos);
