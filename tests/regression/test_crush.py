@@ -207,7 +207,8 @@ def case_region(liggghts, work, ranks):
 
 def case_tip_example(liggghts, work):
     """examples/tip: with its region following the tip, every event lies within 1.5 tip radii of
-    the tip's axis; without the region (reach 0) the same push breaks more grains, some far away."""
+    the tip's axis; without the region (reach 0) the same push breaks more grains, some far away;
+    with 'every adaptive' the same events as checking every step."""
     tip = os.path.join(ROOT, "examples", "tip", "in.tip")
     axis, reach = (0.00105, 0.00105), 1.5 * 0.0004
 
@@ -220,6 +221,11 @@ def case_tip_example(liggghts, work):
           "region: %d events, all within %.2g mm of the tip's axis" % (len(near), reach * 1e3))
     check(len(everywhere) > len(near) and max(everywhere) > reach,
           "no region: %d events, up to %.2g mm away" % (len(everywhere), max(everywhere) * 1e3))
+    # 'every adaptive' with the moving region and the tip moved by fix move: the same events.
+    run_deck(liggghts, tip, os.path.join(work, "adaptive"), {"every": "adaptive"})
+    with open(os.path.join(work, "region", "tip_events.csv")) as a, \
+            open(os.path.join(work, "adaptive", "tip_events.csv")) as b:
+        check(a.read() == b.read(), "every adaptive: the same %d events at the same steps" % len(near))
 
 
 def case_restart(liggghts, work):
