@@ -9,10 +9,7 @@
 # (doc/accuracy_vs_cost.md).
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
-liggghts=${LIGGGHTS:-$here/../build/liggghts}
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cp "$here"/in.dense_assembly "$here"/in.crush_idle "$work"/
+source "$here/dense_assembly.sh"   # liggghts, the scratch folder work with the decks
 first=""
 for cells in "${@:-14 29 63}"; do
   for c in $cells; do
