@@ -163,9 +163,15 @@ void FixCrush::init()
 // Only grains inside the region may break (keyword region): a scene crushes where it needs to.
 bool FixCrush::may_break(int i) const
 {
-  if (2.0 * atom->radius[i] < settings_.dmin) return false;
+  if (!breakable(i)) return false;
   const double *x = atom->x[i];
   return !region_ || region_->match(x[0], x[1], x[2]);
+}
+
+// Group members at or above the comminution limit: the grains that may break somewhere.
+bool FixCrush::breakable(int i) const
+{
+  return (atom->mask[i] & groupbit) && 2.0 * atom->radius[i] >= settings_.dmin;
 }
 
 void FixCrush::check_pair_style() const
@@ -307,11 +313,11 @@ void FixCrush::end_of_step()
   if (local_max >= 1.0) {
     if (region_) region_->prematch();  // a moving region: its position at this step
     for (int i = 0; i < atom->nlocal; i++)
-      if ((mask[i] & groupbit) && data[i][RATIO] >= 1.0 && may_break(i)) mothers.push_back(i);
+      if (data[i][RATIO] >= 1.0 && may_break(i)) mothers.push_back(i);
   }
   local_max_ratio_ = local_max;
-  max_ratio_step_ = -1;
-  if (settings_.adaptive) schedule_next_check();  // reduced over processors when output asks for it, not every step
+  max_ratio_step_ = -1;  // reduced over processors when output asks for it, not every step
+  if (settings_.adaptive) schedule_next_check();
   // One reduction: the events, and the particle count, so that particles lost through the box
   // (which LIGGGHTS deletes silently by default) stop the run instead of unbalancing the books.
   bigint local_counts[2] = {static_cast<bigint>(mothers.size()), atom->nlocal}, counts[2];

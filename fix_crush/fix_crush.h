@@ -86,6 +86,7 @@ class FixCrush : public Fix {
   void check_unique_tags() const;
   tagint largest_tag() const;
   bool may_break(int i) const;
+  bool breakable(int i) const;
   double create_fragments(int mother, tagint first_tag, int generation);
   void delete_mothers(std::vector<int> &mothers);
 

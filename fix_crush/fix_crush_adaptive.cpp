@@ -45,12 +45,12 @@ void FixCrush::update_ratio_growth()
 {
   const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
   const double *radius = atom->radius;
-  const int *type = atom->type, *mask = atom->mask;
+  const int *type = atom->type;
   double smallest = std::numeric_limits<double>::infinity();
   for (int i = 0; i < nall; i++) smallest = std::min(smallest, radius[i]);
   ratio_growth_.assign(nlocal, 0.0);
   for (int i = 0; i < nlocal; i++)
-    if ((mask[i] & groupbit) && 2.0 * radius[i] >= settings_.dmin)
+    if (breakable(i))
       ratio_growth_[i] = crush::ratio_growth(ratio_coefficient_[type[i]], strength_term_[i], radius[i], smallest);
 }
 
