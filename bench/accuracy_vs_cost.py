@@ -9,10 +9,14 @@ Errors, each the largest absolute difference from the reference:
   K0         K0 against vertical stress (5-row running mean), 1 to 100 MPa
   GSD        percent passing at 100 MPa, over the 11 sieves
   I_G        grading index against vertical stress, 1 to 100 MPa
+  events     the crushing events to 100 MPa (relative difference)
 and the yield stress: where the two straight lines of e against log(sigma_v) fitted to 0.3-3 MPa
 and to 50-100 MPa meet (its relative difference). A setting that changes one knob at N = 1.5 or 2
 is also compared with the base setting of its own N (L_R 0.1, dmin 0.05 mm, dt fraction 0.5,
-dt every 1, crush every 1): that difference is the knob's alone, without the change of sample that N brings.
+dt every 1, crush every 1, layout fourteen): that difference is the knob's alone, without the change
+of sample that N brings. A setting is on the Pareto front of a measure when no other setting is both
+as fast and closer to the reference in it; the table names the measures where each setting is.
+A run stopped by the script's time limit is listed with the stress it reached and no errors.
 Also reported: the smallest time step of the run and the physical time it covered. Writes OUT_DIR/accuracy_vs_cost.csv,
 accuracy_vs_cost_table.md, pareto.png (error against runtime) and fig7_runtime.png (runtime against
 initial particles, with the PFC3D runtimes of the paper's Table 3).
@@ -38,8 +42,8 @@ GRID = np.logspace(math.log10(2e5), 8, 60)
 
 
 def read_csv(path):
-    """post/plot.py's reader, columns as numpy arrays; setting.csv's 'name' is text."""
-    return {k: np.array(v) for k, v in plot.read_csv(path, skip=("name",)).items()}
+    """post/plot.py's reader, columns as numpy arrays; setting.csv's words are text."""
+    return {k: np.array(v) for k, v in plot.read_csv(path, skip=("name", "crush_every", "layout")).items()}
 
 
 def running_mean(values, width=5):
@@ -82,12 +86,17 @@ def load(folder):
     screen = open(os.path.join(folder, "screen.txt"), errors="replace").read()
     m = re.search(r"^SAMPLE N = \S+: (\d+) particles", screen, re.M)
     rss = re.search(r"Maximum resident set size \(kbytes\): (\d+)", open(os.path.join(folder, "time.txt")).read())
+    checked = re.search(r"^CHECKED STEPS (\d+) OF (\d+)", screen, re.M)
     return {
         "name": name, "N": float(setting["N"][0]), "L_R": float(setting["L_R"][0]),
         "dmin_mm": float(setting["dmin_mm"][0]), "dt_fraction": float(setting["dt_fraction"][0]),
-        "crush_every": int(setting["crush_every"][0]), "ranks": int(setting["ranks"][0]),
-        # runs made before the dt_every knob existed updated the step every step
+        "crush_every": str(setting["crush_every"][0]), "ranks": int(setting["ranks"][0]),
+        # runs made before these knobs existed: step updated every step, the fourteen fragments, no limit
         "dt_every": int(setting["dt_every"][0]) if "dt_every" in setting else 1,
+        "layout": str(setting["layout"][0]) if "layout" in setting else "fourteen",
+        "finished": int(setting["finished"][0]) if "finished" in setting else 1,
+        "sigma_end_MPa": float(history["sigma_z"][-1]) / 1e6,
+        "checked_percent": 100.0 * int(checked.group(1)) / int(checked.group(2)) if checked else float("nan"),
         "seconds": float(setting["seconds"][0]), "initial": int(m.group(1)) if m else 0,
         "final": int(history["particles"][-1]), "events": int(history["events"][-1]),
         "rss_mb": int(rss.group(1)) / 1024.0 if rss else float("nan"),
@@ -106,19 +115,29 @@ def errors(run, ref, suffix=""):
         "err_gsd_percent": float(np.max(np.abs(run["gsd"]["percent_passing"] - ref["gsd"]["percent_passing"]))),
         "err_I_G": largest("I_G", lo=1e6),
         "err_yield_relative": abs(run["yield"] / ref["yield"] - 1.0),
+        "err_events_relative": abs(run["events"] / ref["events"] - 1.0) if ref["events"] else float("nan"),
     }
     return {k + suffix: v for k, v in out.items()}
 
 
 def is_base(r):
-    return (r["L_R"] == 0.1 and r["dmin_mm"] == 0.05 and r["dt_fraction"] == 0.5 and r["crush_every"] == 1
-            and r["dt_every"] == 1)
+    return (r["L_R"] == 0.1 and r["dmin_mm"] == 0.05 and r["dt_fraction"] == 0.5 and r["crush_every"] == "1"
+            and r["dt_every"] == 1 and r["layout"] == "fourteen")
 
 
-ERRORS = ["err_porosity", "err_K0", "err_gsd_percent", "err_I_G", "err_yield_relative"]
-COLUMNS = (["name", "N", "L_R", "dmin_mm", "dt_fraction", "dt_every", "crush_every", "ranks", "initial", "final", "events",
-            "seconds", "speedup_vs_reference", "rss_mb", "dt_min", "time_end", "yield_MPa"] + ERRORS
-           + [e + "_vs_base" for e in ERRORS])
+ERRORS = ["err_porosity", "err_K0", "err_gsd_percent", "err_I_G", "err_yield_relative", "err_events_relative"]
+FRONT = {"err_porosity": "n", "err_K0": "K0", "err_gsd_percent": "GSD", "err_I_G": "I_G",
+         "err_events_relative": "events"}
+COLUMNS = (["name", "N", "L_R", "dmin_mm", "dt_fraction", "dt_every", "crush_every", "layout", "ranks", "finished",
+            "sigma_end_MPa", "initial", "final", "events", "checked_percent", "seconds", "speedup_vs_reference", "rss_mb",
+            "dt_min", "time_end", "yield_MPa"] + ERRORS + [e + "_vs_base" for e in ERRORS] + ["pareto_front"])
+
+
+def pareto_front(rows, key):
+    """Names of the finished settings that no other is both at least as fast as and closer than in key."""
+    done = [r for r in rows if r["finished"] and r["name"] != "reference" and not math.isnan(r.get(key, math.nan))]
+    return {r["name"] for r in done
+            if not any(o is not r and o["seconds"] <= r["seconds"] and o[key] < r[key] for o in done)}
 
 
 def main(out):
@@ -130,27 +149,40 @@ def main(out):
     rows = []
     for r in runs:
         row = {k: r[k] for k in COLUMNS if k in r}
-        row.update(errors(r, ref))
-        base = bases.get(r["N"])
-        if base is not None and base is not r and r["name"] != "reference":
-            row.update(errors(r, base, "_vs_base"))
-        row["yield_MPa"] = r["yield"] / 1e6
         row["speedup_vs_reference"] = ref["seconds"] / r["seconds"]
+        if r["finished"]:
+            row.update(errors(r, ref))
+            base = bases.get(r["N"])
+            if base is not None and base is not r and r["name"] != "reference":
+                row.update(errors(r, base, "_vs_base"))
+            row["yield_MPa"] = r["yield"] / 1e6
         rows.append(row)
+    fronts = {key: pareto_front(rows, key) for key in FRONT}
+    for row in rows:
+        row["pareto_front"] = " ".join(label for key, label in FRONT.items() if row["name"] in fronts[key])
     with open(os.path.join(out, "accuracy_vs_cost.csv"), "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=COLUMNS)
         w.writeheader()
         for row in rows:
             w.writerow({k: ("%.4g" % row[k] if isinstance(row.get(k), float) else row.get(k, "")) for k in COLUMNS})
-    table = ["| setting | N | L_R | dmin (mm) | dt fraction | dt every | crush every | particles (initial, final) | events | runtime (s) | speed-up | smallest dt (s) | max dn | max dK0 | max dGSD (%) | max dI_G | yield (MPa) | vs own-N base: dn, dK0, dGSD, dI_G |",
-             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    table = ["| setting | N | L_R | dmin (mm) | dt fraction | dt every | crush every | layout | particles (initial, final) "
+             "| events | runtime (s) | speed-up | smallest dt (s) | max dn | max dK0 | max dGSD (%) | max dI_G | d events (%) "
+             "| yield (MPa) | vs own-N base: dn, dK0, dGSD, dI_G, d events (%) | on the Pareto front of |",
+             "|" + "---|" * 21]
     for r in rows:
-        vs_base = ("%.4f, %.3f, %.2f, %.4f" % (r["err_porosity_vs_base"], r["err_K0_vs_base"], r["err_gsd_percent_vs_base"],
-                                              r["err_I_G_vs_base"]) if "err_porosity_vs_base" in r else "")
-        table.append("| %s | %g | %g | %s | %g | %d | %d | %d, %d | %d | %.0f | %.1f | %.2g | %.4f | %.3f | %.2f | %.4f | %.1f | %s |" % (
+        setting = "| %s | %g | %g | %s | %g | %d | %s | %s | %d, %d | %d | " % (
             r["name"], r["N"], r["L_R"], "none" if r["dmin_mm"] == 0 else "%g" % r["dmin_mm"], r["dt_fraction"],
-            r["dt_every"], r["crush_every"], r["initial"], r["final"], r["events"], r["seconds"], r["speedup_vs_reference"], r["dt_min"],
-            r["err_porosity"], r["err_K0"], r["err_gsd_percent"], r["err_I_G"], r["yield_MPa"], vs_base))
+            r["dt_every"], r["crush_every"], r["layout"], r["initial"], r["final"], r["events"])
+        if not r["finished"]:
+            table.append(setting + "stopped at %.0f, at %.1f MPa | | %.2g |%s" % (r["seconds"], r["sigma_end_MPa"], r["dt_min"],
+                                                                               " |" * 9))
+            continue
+        vs_base = ("%.4f, %.3f, %.2f, %.4f, %.0f" % (r["err_porosity_vs_base"], r["err_K0_vs_base"], r["err_gsd_percent_vs_base"],
+                                                    r["err_I_G_vs_base"], 100 * r["err_events_relative_vs_base"])
+                   if "err_porosity_vs_base" in r else "")
+        table.append(setting + "%.0f | %.1f | %.2g | %.4f | %.3f | %.2f | %.4f | %.0f | %.1f | %s | %s |" % (
+            r["seconds"], r["speedup_vs_reference"], r["dt_min"], r["err_porosity"], r["err_K0"], r["err_gsd_percent"],
+            r["err_I_G"], 100 * r["err_events_relative"], r["yield_MPa"], vs_base, r["pareto_front"]))
     open(os.path.join(out, "accuracy_vs_cost_table.md"), "w").write("\n".join(table) + "\n")
     print("\n".join(table))
     pareto(rows, out)
@@ -158,10 +190,11 @@ def main(out):
 
 
 def pareto(rows, out):
-    """Top: every setting against the reference. Bottom: each knob against its own N's base setting."""
-    fig, axes = plt.subplots(2, 4, figsize=(18, 9))
-    keys = ["err_porosity", "err_K0", "err_gsd_percent", "err_I_G"]
-    titles = ["porosity n", "K0", "GSD at 100 MPa (% passing)", "I_G"]
+    """Top: every setting against the reference, its Pareto front drawn. Bottom: each knob against its
+    own N's base setting."""
+    keys = list(FRONT)
+    titles = ["porosity n", "K0", "GSD at 100 MPa (% passing)", "I_G", "events (relative)"]
+    fig, axes = plt.subplots(2, len(keys), figsize=(4.4 * len(keys), 9))
     for row_axes, suffix, what in ((axes[0], "", "the reference (N = 1, L_R = 0.05, dmin = 0.025 mm)"),
                                    (axes[1], "_vs_base", "the base setting of the same N")):
         for ax, key, title in zip(row_axes, keys, titles):
@@ -169,13 +202,20 @@ def pareto(rows, out):
                 if r["name"] == "reference" or key + suffix not in r:
                     continue
                 y = max(r[key + suffix], 1e-5)
-                ax.loglog(r["seconds"], y, "o")
+                on_front = not suffix and FRONT[key] in r["pareto_front"].split()
+                ax.loglog(r["seconds"], y, "o", color="C3" if on_front else "C0")
                 ax.annotate(r["name"], (r["seconds"], y), fontsize=7, xytext=(3, 3 + 4 * (k % 3)),
                             textcoords="offset points")
+            if not suffix:
+                front = sorted((r["seconds"], max(r[key], 1e-5)) for r in rows
+                               if FRONT[key] in r["pareto_front"].split())
+                if front:
+                    ax.step(*zip(*front), where="post", color="C3", lw=1, label="Pareto front")
+                    ax.legend(fontsize=7)
             ax.set_xlabel("runtime (s, %d ranks)" % rows[0]["ranks"])
             ax.set_ylabel("largest difference")
-            ax.set_title("%s, against %s" % (title, what), fontsize=8)
-    fig.suptitle("Accuracy against cost: O-N to 100 MPa")
+            ax.set_title("%s, against\n%s" % (title, what), fontsize=8)
+    fig.suptitle("Accuracy against cost: O-N to 100 MPa with the paper's crushing")
     fig.tight_layout()
     fig.savefig(os.path.join(out, "pareto.png"), dpi=100)
     plt.close(fig)

@@ -1,6 +1,7 @@
 /* Crushing model (plain C++): keyword tables of the plugin's commands (see crush_keywords.h). */
 #include "crush_keywords.h"
 
+#include <cmath>
 #include <set>
 
 #include "crush_model_error.h"
@@ -31,6 +32,14 @@ double KeywordTable::value(const std::string &name, const std::vector<std::strin
   return v;
 }
 
+long KeywordTable::whole(const std::string &name, const std::vector<std::string> &args, std::size_t at, long low,
+                         long high) const
+{
+  const double v = value(name, args, at);
+  if (!(v >= static_cast<double>(low)) || v > static_cast<double>(high) || v != std::floor(v)) fail(name, args[at]);
+  return static_cast<long>(v);
+}
+
 KeywordTable &KeywordTable::number(const std::string &name, const std::string &expects, Accept ok, double &target,
                                    bool required)
 {
@@ -46,11 +55,8 @@ KeywordTable &KeywordTable::integer(const std::string &name, const std::string &
                                     bool required)
 {
   return add(name, expects, [this, name, low, &target](const std::vector<std::string> &args, std::size_t at) {
-    const double v = value(name, args, at + 1);
-    // whole numbers only, within what a long holds exactly
-    if (!(v >= static_cast<double>(low)) || v > 9.0e15 || v != static_cast<double>(static_cast<long>(v)))
-      fail(name, args[at + 1]);
-    target = static_cast<long>(v);
+    // up to what a double holds exactly
+    target = whole(name, args, at + 1, low, 9000000000000000L);
     return std::size_t(1);
   }, required);
 }

@@ -65,6 +65,9 @@ class KeywordTable {
 
   // The number args[at] for keyword name, or fail().
   double value(const std::string &name, const std::vector<std::string> &args, std::size_t at) const;
+  // The whole number args[at] in [low, high] for keyword name, or fail().
+  long whole(const std::string &name, const std::vector<std::string> &args, std::size_t at, long low,
+             long high) const;
 
  private:
   struct Keyword {

@@ -1,8 +1,6 @@
 /* Crushing model (plain C++): fix crush settings (see crush_settings.h). */
 #include "crush_settings.h"
 
-#include <cmath>
-
 #include "crush_breakage_limit.h"
 #include "crush_model_error.h"
 #include "crush_keywords.h"
@@ -32,10 +30,8 @@ CrushSettings parse_crush_settings(const std::vector<std::string> &args)
        c.adaptive = true;
        return std::size_t(1);
      }
-     const double v = t.value("every", w, at + 1);
-     if (!(v >= 1.0) || v > 1e9 || v != std::floor(v)) t.fail("every", w[at + 1]);
      c.adaptive = false;
-     every = static_cast<long>(v);
+     every = t.whole("every", w, at + 1, 1, 1000000000L);
      return std::size_t(1);
    })
    .choice("orientation", {"random", "fixed"}, orientation)

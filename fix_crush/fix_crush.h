@@ -20,6 +20,7 @@ FixStyle(crush,FixCrush)
 #define LMP_FIX_CRUSH_H
 
 #include <cstdio>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -69,6 +70,7 @@ class FixCrush : public Fix {
   void record_on_check_steps();
   bool decide_check(bool renumbered);
   void find_moving_walls();
+  class Fix *wall(std::size_t k) const;
   void update_ratio_growth();
   void store_check_reference();
   double largest_displacement() const;
@@ -105,7 +107,7 @@ class FixCrush : public Fix {
   std::vector<double> ratio_growth_;       // per local atom: growth_i (0: never breaks), at reneighboring
   std::vector<double> reference_x_;        // per local atom: its position at the last check
   std::vector<double> wall_reference_;     // the fix wall/servo walls' positions at the last check
-  std::vector<class Fix *> walls_;         // the fix wall/servo instances
+  std::vector<std::string> wall_ids_;      // the fix wall/servo instances, found by ID at each use
   double box_reference_[3];
   double allowed_displacement_;            // D below which no grain can reach its limit
   bool force_check_;                       // check the next step (run start)

@@ -29,14 +29,21 @@ const int nwall_positions = 6;  // fix wall/servo: f_walls[1..6], the wall posit
 // moved by fix move/mesh is not covered: refuse rather than miss an event.
 void FixCrush::find_moving_walls()
 {
-  walls_.clear();
+  wall_ids_.clear();
   for (int k = 0; k < modify->nfix; k++) {
     const char *style = modify->fix[k]->style;
-    if (strcmp(style, "wall/servo") == 0) walls_.push_back(modify->fix[k]);
+    if (strcmp(style, "wall/servo") == 0) wall_ids_.push_back(modify->fix[k]->id);
     else if (strncmp(style, "move/mesh", 9) == 0)
       error->fix_error(FLERR, this, "keyword 'every adaptive' bounds the motion of fix wall/servo walls only, "
                                     "and fix move/mesh moves a mesh: use 'every 1' (or 'every N')");
   }
+}
+
+// Wall k of init(), or NULL once unfixed: by ID, since 'run ... pre no' after an unfix skips init().
+Fix *FixCrush::wall(std::size_t k) const
+{
+  const int ifix = modify->find_fix(wall_ids_[k].c_str());
+  return ifix < 0 ? NULL : modify->fix[ifix];
 }
 
 // growth_i of every local particle that may break (crush_check_bound.h), with the smallest radius
@@ -63,9 +70,10 @@ void FixCrush::store_check_reference()
   reference_x_.resize(3 * static_cast<std::size_t>(nlocal));
   for (int i = 0; i < nlocal; i++)
     for (int k = 0; k < 3; k++) reference_x_[3 * i + k] = x[i][k];
-  wall_reference_.clear();
-  for (Fix *wall : walls_)
-    for (int k = 0; k < nwall_positions; k++) wall_reference_.push_back(wall->compute_vector(k));
+  wall_reference_.assign(nwall_positions * wall_ids_.size(), 0.0);
+  for (std::size_t w = 0; w < wall_ids_.size(); w++)
+    if (Fix *f = wall(w))
+      for (int k = 0; k < nwall_positions; k++) wall_reference_[nwall_positions * w + k] = f->compute_vector(k);
   for (int k = 0; k < 3; k++) box_reference_[k] = domain->prd[k];
 }
 
@@ -83,10 +91,11 @@ double FixCrush::largest_displacement() const
     largest_squared = d2 > largest_squared ? d2 : largest_squared;
   }
   double largest = std::sqrt(largest_squared);
-  std::size_t w = 0;
-  for (Fix *wall : walls_)
-    for (int k = 0; k < nwall_positions; k++, w++)
-      largest = std::max(largest, std::fabs(wall->compute_vector(k) - wall_reference_[w]));
+  // a wall unfixed since the check touches nothing any more
+  for (std::size_t w = 0; w < wall_ids_.size(); w++)
+    if (Fix *f = wall(w))
+      for (int k = 0; k < nwall_positions; k++)
+        largest = std::max(largest, std::fabs(f->compute_vector(k) - wall_reference_[nwall_positions * w + k]));
   // A periodic image moves with the box length as well.
   for (int k = 0; k < 3; k++)
     if (domain->periodicity[k]) largest = std::max(largest, std::fabs(domain->prd[k] - box_reference_[k]));

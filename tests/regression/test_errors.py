@@ -7,7 +7,9 @@
 
 WHICH: event_log (fix crush cannot open its log: error->one on proc 0), time_step (a time step above
 the stable one: error->all), lost (a particle leaves the box), one_rank (an invalid atom type in a
-data file, found only by the proc that owns the atom: on 2 ranks proc 1 raises error->one alone).
+data file, found only by the proc that owns the atom: on 2 ranks proc 1 raises error->one alone),
+adaptive_mesh (fix crush 'every adaptive' beside a mesh moved by fix move/mesh, whose motion its bound
+does not cover: error->all in init).
 """
 import os
 import subprocess
@@ -35,6 +37,29 @@ Atoms
 2 3 0.0002 2650 0.0009 0.0009 0.0009
 """
 
+# A plane at z = 0 under the single grain, as a mesh (ASCII STL, two facets).
+PLANE_STL = """solid plane
+facet normal 0 0 1
+ outer loop
+  vertex -0.0009 -0.0009 0
+  vertex 0.0009 -0.0009 0
+  vertex 0.0009 0.0009 0
+ endloop
+endfacet
+facet normal 0 0 1
+ outer loop
+  vertex -0.0009 -0.0009 0
+  vertex 0.0009 0.0009 0
+  vertex -0.0009 0.0009 0
+ endloop
+endfacet
+endsolid plane
+"""
+
+MESH_FLOOR = """fix             plane all mesh/surface file plane.stl type 2
+fix             floor all wall/gran model hertz/scaled tangential mindlin/scaled mesh n_meshes 1 meshes plane
+fix             lift all move/mesh mesh plane linear 0.0 0.0 1e-3"""
+
 DATA_DECK = """atom_style      granular
 atom_modify     map array
 boundary        p p p
@@ -58,6 +83,13 @@ def failing_deck(case, work):
         return edited_deck(SINGLE, folder, [("fix             load all addforce 0.0 0.0 v_push",
                                              "fix             load all addforce 0.0 0.0 1.0")]), \
             "fix crush: 1 particles were lost"
+    if case == "adaptive_mesh":
+        deck = edited_deck(SINGLE, folder, [
+            ("variable        every index 1", "variable        every index adaptive"),
+            ("fix             floor all wall/gran model hertz/scaled tangential mindlin/scaled primitive type 2 zplane 0.0",
+             MESH_FLOOR)])
+        open(os.path.join(folder, "plane.stl"), "w").write(PLANE_STL)
+        return deck, "keyword 'every adaptive' bounds the motion of fix wall/servo walls only"
     if case == "one_rank":
         os.makedirs(folder, exist_ok=True)
         open(os.path.join(folder, "bad.data"), "w").write(BAD_DATA)
@@ -84,7 +116,8 @@ def check_error(liggghts, work, case, ranks):
         check("ERROR on proc 1: " + message in out, "raised on proc 1 alone, and named so")
 
 
-@variants(*[(which, ranks) for which in ("event_log", "time_step", "lost", "one_rank") for ranks in (1, 2)])
+@variants(*[(which, ranks) for which in ("event_log", "time_step", "lost", "one_rank",
+                                                                 "adaptive_mesh") for ranks in (1, 2)])
 def case_redirected(liggghts, work, which, ranks):
     check_error(liggghts, work, which, ranks)
 

@@ -88,6 +88,8 @@ TEST(CrushSettings, ErrorsNameTheKeywordAndTheExpectedValue)
   EXPECT_NE(error_of(with({"every", "1.5"})).find("'every' expects an integer >= 1 or 'adaptive', got '1.5'"),
             std::string::npos);
   EXPECT_NE(error_of(with({"every", "0"})).find("got '0'"), std::string::npos);
+  // beyond an int's range: the step counter is an int
+  EXPECT_NE(error_of(with({"every", "2e9"})).find("got '2e9'"), std::string::npos);
   EXPECT_NE(error_of(with({"every"})).find("'every' expects"), std::string::npos);
   EXPECT_TRUE(parse_crush_settings(with({"every", "adaptive"})).adaptive);
   EXPECT_NE(error_of(with({"orientation", "up"})).find("'random' or 'fixed'"), std::string::npos);
