@@ -83,7 +83,8 @@ def load(folder):
         setting = {k: [v] for k, v in next(csv.DictReader(f)).items()}  # one row, text
     name = os.path.basename(folder.rstrip("/"))
     history = read_csv(glob.glob(os.path.join(folder, "history_O*.csv"))[0])
-    gsd = read_csv(glob.glob(os.path.join(folder, "gsd_O*_100MPa.csv"))[0])
+    gsd_files = glob.glob(os.path.join(folder, "gsd_O*_100MPa.csv"))  # none in a run stopped before 100 MPa
+    gsd = read_csv(gsd_files[0]) if gsd_files else None
     screen = open(os.path.join(folder, "screen.txt"), errors="replace").read()
     m = re.search(r"^SAMPLE N = \S+: (\d+) particles", screen, re.M)
     rss = re.search(r"Maximum resident set size \(kbytes\): (\d+)", open(os.path.join(folder, "time.txt")).read())
@@ -148,7 +149,7 @@ def main(out):
     ref = next((r for r in runs if r["name"] == "reference"), None)
     if ref is None:
         sys.exit("accuracy_vs_cost.py: no finished 'reference' run in " + out)
-    bases = {r["N"]: r for r in runs if is_base(r)}
+    bases = {r["N"]: r for r in runs if is_base(r) and r["finished"]}
     rows = []
     for r in runs:
         row = {k: r[k] for k in COLUMNS if k in r}
@@ -188,11 +189,11 @@ def main(out):
             r["err_I_G"], 100 * r["err_events_relative"], r["yield_MPa"], vs_base, r["pareto_front"]))
     open(os.path.join(out, "accuracy_vs_cost_table.md"), "w").write("\n".join(table) + "\n")
     print("\n".join(table))
-    pareto(rows, out)
+    pareto(rows, fronts, out)
     fig7(runs, out)
 
 
-def pareto(rows, out):
+def pareto(rows, fronts, out):
     """Top: every setting against the reference, its Pareto front drawn. Bottom: each knob against its
     own N's base setting."""
     keys = list(FRONT)
@@ -205,13 +206,12 @@ def pareto(rows, out):
                 if r["name"] == "reference" or key + suffix not in r:
                     continue
                 y = max(r[key + suffix], 1e-5)
-                on_front = not suffix and FRONT[key] in r["pareto_front"].split()
+                on_front = not suffix and r["name"] in fronts[key]
                 ax.loglog(r["seconds"], y, "o", color="C3" if on_front else "C0")
                 ax.annotate(r["name"], (r["seconds"], y), fontsize=7, xytext=(3, 3 + 4 * (k % 3)),
                             textcoords="offset points")
             if not suffix:
-                front = sorted((r["seconds"], max(r[key], 1e-5)) for r in rows
-                               if FRONT[key] in r["pareto_front"].split())
+                front = sorted((r["seconds"], max(r[key], 1e-5)) for r in rows if r["name"] in fronts[key])
                 if front:
                     ax.step(*zip(*front), where="post", color="C3", lw=1, label="Pareto front")
                     ax.legend(fontsize=7)
@@ -226,7 +226,7 @@ def pareto(rows, out):
 
 def fig7(runs, out):
     fig, ax = plt.subplots(figsize=(6, 4.5))
-    scale = [r for r in runs if is_base(r)]
+    scale = [r for r in runs if is_base(r) and r["finished"]]
     scale.sort(key=lambda r: r["initial"])
     ax.loglog([r["initial"] for r in scale], [r["seconds"] / 60 for r in scale], "o-",
               label="liggghts-crush, %d ranks" % (scale[0]["ranks"] if scale else 2))

@@ -43,8 +43,7 @@ nodmin_N1       1   0.05 0     0.5 1  1        fourteen
 wanted=" ${*:-all} "
 echo "$settings" | while read -r name n lr dmin frac dt_every every layout; do
   [ -n "$name" ] || continue
-  # nodmin_N1 (the reference without a comminution limit: 7 minutes, a cascade to nanometres) only
-  # when named
+  # nodmin_N1 (the reference without a comminution limit: a cascade to nanometres) only when named
   [[ ( "$wanted" == " all " && "$name" != nodmin_N1 ) || "$wanted" == *" $name "* ]] || continue
   dir=$out/$name
   if [ -f "$dir/done" ]; then echo "== $name: done before"; continue; fi
@@ -52,10 +51,15 @@ echo "$settings" | while read -r name n lr dmin frac dt_every every layout; do
   echo "== $name: N $n, L_R $lr, dmin $dmin mm, dt_fraction $frac, dt_every $dt_every, crush_every $every," \
        "layout $layout ($ranks ranks)"
   start=$(date +%s%N)
-  finished=1
+  status=0
   (cd "$dir" && /usr/bin/time -v timeout "$limit" mpirun -np "$ranks" "$liggghts" -in in.oedometer -var N "$n" \
      -var LR "$lr" -var dmin "${dmin}e-3" -var dt_fraction "$frac" -var dt_every "$dt_every" \
-     -var crush_every "$every" -var layout "$layout" -log log.liggghts < /dev/null > screen.txt 2> time.txt) || finished=0
+     -var crush_every "$every" -var layout "$layout" -log log.liggghts < /dev/null > screen.txt 2> time.txt) || status=$?
+  # 124: stopped by timeout (LIMIT); any other failure is an error, not a row
+  if [ "$status" != 0 ] && [ "$status" != 124 ]; then
+    tail -5 "$dir/screen.txt"; echo "$name failed with exit status $status"; exit 1
+  fi
+  finished=$([ "$status" = 0 ] && echo 1 || echo 0)
   seconds=$(awk -v a="$start" -v b="$(date +%s%N)" 'BEGIN {printf "%.1f", (b - a) / 1e9}')
   printf "name,N,L_R,dmin_mm,dt_fraction,dt_every,crush_every,layout,ranks,seconds,finished\n%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s\n" \
     "$name" "$n" "$lr" "$dmin" "$frac" "$dt_every" "$every" "$layout" "$ranks" "$seconds" "$finished" > "$dir/setting.csv"

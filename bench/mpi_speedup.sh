@@ -29,9 +29,10 @@ for run in "1 * * 1" "2 * * 1" "2 * * *"; do
   seconds[$run]=$(awk -v a="$start" -v b="$(date +%s%N)" 'BEGIN {printf "%.1f", (b - a) / 1e9}')
   events=$(($(wc -l < "$dir/events_O${n}.csv") - 1))
   echo "O-$n on $name: ${seconds[$run]} s, $events events, $(grep -m1 'MPI processor grid' "$dir/screen.txt" | xargs)"
-  # particles per rank at 100 MPa: the last STATE line's total split by where each one is (dump file)
-  dump=$(ls "$dir"/dump_O"${n}"_100MPa.liggghts 2>/dev/null || true)
-  if [ "$ranks" = 2 ] && [ -n "$dump" ]; then
+  # particles per rank at 100 MPa, from the dump: either side of the one cut, at the middle of the
+  # box (-1 to 5 mm, in.prepare) along x (2 x 1 x 1) or z (1 x 1 x 2)
+  dump="$dir/dump_O${n}_100MPa.liggghts"
+  if [ "$ranks" = 2 ] && [ -f "$dump" ]; then
     axis=$([ "$grid" = "* * 1" ] && echo 3 || echo 5)  # x or z column of 'id type x y z ...'
     awk -v c="$axis" 'f && NF > 4 {n++; if ($c < 0.002) low++} /^ITEM: ATOMS/ {f = 1}
       END {printf "   at 100 MPa: %d and %d particles either side of the cut (%.0f%% on the fuller rank)\n", low, n - low,
