@@ -100,6 +100,9 @@ def case_oedometer_short(liggghts, work, ranks=1):
     check(len(progress) == 20 and float(progress[-1][0]) == 100.0, "20 progress lines, the last at 100%")
     if int(ranks) == 1:
         plot(work, ["fig4_oedometric.png", "fig6_stress_paths.png", "fig_crushing.png"])
+    else:
+        # the decks' grid "* * 1" (in.prepare): the cut never crosses the loading axis z
+        check("2 by 1 by 1 MPI processor grid" in out, "2 ranks cut x, not the loading axis z")
 
 
 @variants(timeout=600)
