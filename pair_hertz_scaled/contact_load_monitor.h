@@ -1,23 +1,20 @@
 /* ----------------------------------------------------------------------
    liggghts-crush: how the contact models publish each contact's load (hertz_mindlin_contact_load.h).
 
-   The contact layer owns this interface; a consumer (fix crush) owns a ContactLoadRecorder and
-   attaches it. The hertz/scaled normal model and fix wall/servo ask their ContactLoadMonitor for it
-   at each contact and, when one is attached, record the contact's load on the particle and on its
-   partner ball (F_n / F_lim of eq. 5/7/10 once divided by the consumer's strength term). Without a
-   recorder the per-contact cost is one integer compare: the monitor re-resolves only when a recorder
-   was attached or detached (fix crush with 'every' > 1 attaches it for checked steps only).
+   Fix crush owns a ContactLoadRecorder and attaches it (contact_monitor.h); the hertz/scaled normal
+   model and fix wall/servo record each contact's load on the particle and on its partner ball
+   (F_n / F_lim of eq. 5/7/10 once divided by the consumer's strength term). Fix crush with 'every' > 1
+   attaches it for checked steps only.
 ------------------------------------------------------------------------- */
 #ifndef LMP_CONTACT_LOAD_MONITOR_H
 #define LMP_CONTACT_LOAD_MONITOR_H
 
 #include <cmath>
 
+#include "contact_monitor.h"
 #include "hertz_mindlin_contact_load.h"
 
 namespace LAMMPS_NS {
-
-class LAMMPS;
 
 // Records, per particle, the largest contact load F_n (4 E'/3)^2 / r'^2 over its contacts during one
 // force computation. Fix crush multiplies it by 1/(pi sigma_lim)^3 afterwards, which gives the
@@ -44,29 +41,8 @@ class ContactLoadRecorder {
   double **limit_factor;
 };
 
-// Resolves the recorder of the crush fix of one LAMMPS instance, if any.
-class ContactLoadMonitor {
- public:
-  explicit ContactLoadMonitor(LAMMPS *lmp) : lmp_(lmp), generation_(-1), recorder_(0) {}
-
-  inline const ContactLoadRecorder *recorder()
-  {
-    if (generation_ != generation) resolve();
-    return recorder_;
-  }
-
-  // Called by fix crush when it is created or starts a checked step (recorder), and when it is
-  // deleted or starts an unchecked step with 'every' > 1 (NULL).
-  static void attach(LAMMPS *lmp, const ContactLoadRecorder *recorder);
-
-  static int generation;  // changes whenever a recorder is attached or detached
-
- private:
-  void resolve();
-  LAMMPS *lmp_;
-  int generation_;
-  const ContactLoadRecorder *recorder_;
-};
+// The crush fix's recorder, if one is attached (contact_monitor.h).
+typedef ContactMonitor<ContactLoadRecorder> ContactLoadMonitor;
 
 }  // namespace LAMMPS_NS
 

@@ -36,11 +36,13 @@ inline void increment_shear_force(double *Fs, const double *en, double kt_dt, co
 
 // Coulomb: where |Fs| exceeds the limit mu |F_n| (N), Fs is scaled back onto it (sliding) and true
 // is returned; else Fs is left as it is.
+// Compared squared: the square root (a long-latency instruction on the contact's critical path) is
+// taken only where the contact slides.
 inline bool cap_at_coulomb(double *Fs, double limit)
 {
-  const double magnitude = std::sqrt(Fs[0] * Fs[0] + Fs[1] * Fs[1] + Fs[2] * Fs[2]);
-  if (!(magnitude > limit)) return false;
-  const double ratio = magnitude > 0.0 ? limit / magnitude : 0.0;
+  const double magnitude_sq = Fs[0] * Fs[0] + Fs[1] * Fs[1] + Fs[2] * Fs[2];
+  if (!(magnitude_sq > limit * limit)) return false;
+  const double ratio = limit / std::sqrt(magnitude_sq);  // magnitude_sq > 0 here
   for (int k = 0; k < 3; ++k) Fs[k] *= ratio;
   return true;
 }

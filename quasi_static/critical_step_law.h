@@ -14,24 +14,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "hertz_mindlin_scaled_law.h"
+#include "hertz_mindlin_stiffness_sum.h"
 
 namespace crush {
-
-// The summed tangent stiffnesses (N/m) of one particle's contacts.
-struct ContactStiffness {
-  double translational = 0.0;  // sum(k_n + k_s)
-  double shear = 0.0;          // sum(k_s)
-};
-
-// Adds one contact of diameter term Dt = D1 D2/(D1+D2) (m) at overlap U (m).
-inline void add_contact(ContactStiffness &sum, const HertzMindlinCoefficients &c, double diameter_term,
-                        double overlap)
-{
-  const HertzMindlinStiffness k = contact_stiffness(c, diameter_term, overlap);
-  sum.translational += tangent_normal_stiffness(k.normal) + k.shear;
-  sum.shear += k.shear;
-}
 
 // The particle's critical step (s); 1e300 without contacts.
 inline double critical_step(double mass, const ContactStiffness &sum)

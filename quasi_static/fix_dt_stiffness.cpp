@@ -19,7 +19,7 @@
 #include "modify.h"
 #include "neigh_list.h"
 #include "neighbor.h"
-#include "pair.h"
+#include "pair_gran.h"
 #include "update.h"
 
 using namespace LAMMPS_NS;
@@ -27,7 +27,7 @@ using namespace FixConst;
 
 FixDtStiffness::FixDtStiffness(LAMMPS *lmp, int narg, char **arg) :
   Fix(lmp, narg, arg), fraction_(-1.0), growth_(1.01), dt_max_(1e300), dt_start_(0.0), every_(1),
-  stiffening_(false), warned_(false)
+  stiffening_(false), warned_(false), updating_(false), published_(false)
 {
   fix_input(this, error, [&] {
     long every = 1;
@@ -46,15 +46,25 @@ FixDtStiffness::FixDtStiffness(LAMMPS *lmp, int narg, char **arg) :
   extscalar = 0;
 }
 
+FixDtStiffness::~FixDtStiffness()
+{
+  ContactStiffnessMonitor::attach(lmp, NULL);
+}
+
 int FixDtStiffness::setmask()
 {
-  return END_OF_STEP;
+  return PRE_FORCE | END_OF_STEP;
 }
 
 // eq. 8-9 factors of every type pair, from the types' elastic constants.
 void FixDtStiffness::init()
 {
   if (!force->pair || strncmp(force->pair_style, "gran", 4) != 0) error->fix_error(FLERR, this, "needs pair_style gran");
+  // hertz/scaled publishes every contact's stiffness during the force pass; other contact models
+  // leave the fix to walk the neighbour list itself.
+  PairGran *pair = static_cast<PairGran *>(force->pair_match("gran", 0));
+  published_ = pair && pair->contact_match("normal", "hertz/scaled");
+  if (modify->n_fixes_style(style) > 1) error->fix_error(FLERR, this, "only one fix dt/stiffness can set the time step");
   const int ntypes = atom->ntypes;
   coefficients_.assign((ntypes + 1) * (ntypes + 1), crush::HertzMindlinCoefficients{0.0, 0.0});
   try {
@@ -67,6 +77,12 @@ void FixDtStiffness::init()
   }
 }
 
+// The setup's force pass always feeds an update (setup below).
+void FixDtStiffness::setup_pre_force(int)
+{
+  collect_stiffness(true);
+}
+
 void FixDtStiffness::setup(int)
 {
   update_time_step();
@@ -76,17 +92,32 @@ void FixDtStiffness::setup(int)
 // Every M steps; at every step with a fresh neighbour list, since particles appear (crushing
 // fragments, insertions) only then and a new small particle may need a smaller step at once; and at
 // the step after an update that shrank the step by more than the growth factor: contacts stiffening
-// that fast (fragments pressed together) are followed step by step until they settle.
+// that fast (fragments pressed together) are followed step by step until they settle. Decided before
+// the force pass (the neighbour list is built by then), so that only those passes record.
+void FixDtStiffness::pre_force(int)
+{
+  collect_stiffness(update->ntimestep % every_ == 0 || neighbor->ago == 0 || stiffening_);
+}
+
 void FixDtStiffness::end_of_step()
 {
-  if (update->ntimestep % every_ == 0 || neighbor->ago == 0 || stiffening_) update_time_step();
+  if (updating_) update_time_step();
+}
+
+// Clears the sums and attaches them to the contact model for this step's force pass, or detaches
+// them (the pass then costs what it costs without this fix).
+void FixDtStiffness::collect_stiffness(bool update_now)
+{
+  updating_ = update_now;
+  if (updating_) stiffness_.assign(atom->nlocal + atom->nghost, crush::ContactStiffness());
+  recorder_.sum = stiffness_.data();
+  ContactStiffnessMonitor::attach(lmp, updating_ && published_ ? &recorder_ : NULL);
 }
 
 void FixDtStiffness::update_time_step()
 {
   const int nlocal = atom->nlocal;
-  stiffness_.assign(nlocal, crush::ContactStiffness());
-  add_pair_contacts();
+  if (!published_) add_pair_contacts();
   for (int i = 0; i < modify->nfix; i++)
     if (strcmp(modify->fix[i]->style, "wall/servo") == 0)
       static_cast<FixWallServo *>(modify->fix[i])->add_contact_stiffness(stiffness_);
@@ -109,8 +140,9 @@ void FixDtStiffness::update_time_step()
   if (!warned_ && dt_start_ > 0.0 && update->dt < 1e-3 * dt_start_) warn_collapse(smallest == smallest_all ? radius : 0.0);
 }
 
-// Every overlapping pair of the pair style's half list (newton off: a pair with a ghost is listed on
-// both processors, each adds it to its own particle).
+// Without hertz/scaled: every overlapping pair of the pair style's half list, as the force pass of
+// hertz/scaled records them (newton off: a pair with a ghost is listed on both processors, each adds
+// it to its own particle).
 void FixDtStiffness::add_pair_contacts()
 {
   NeighList *list = force->pair->list;

@@ -21,6 +21,7 @@ FixStyle(dt/stiffness,FixDtStiffness)
 
 #include <vector>
 
+#include "contact_stiffness_monitor.h"
 #include "critical_step_law.h"
 #include "fix.h"
 
@@ -29,13 +30,17 @@ namespace LAMMPS_NS {
 class FixDtStiffness : public Fix {
  public:
   FixDtStiffness(class LAMMPS *, int, char **);
+  ~FixDtStiffness();
   int setmask();
   void init();
+  void setup_pre_force(int);
   void setup(int);
+  void pre_force(int);
   void end_of_step();
   double compute_scalar();
 
  private:
+  void collect_stiffness(bool update_now);
   void update_time_step();
   void add_pair_contacts();
   void set_time_step(double dt);
@@ -46,8 +51,11 @@ class FixDtStiffness : public Fix {
   int every_;        // update interval (steps); reneighboring steps update too
   bool stiffening_;  // the last update shrank the step by more than growth_: update next step too
   bool warned_;
+  bool updating_;    // this step updates the time step (decided at pre_force)
+  bool published_;   // the contact model (hertz/scaled) fills stiffness_ during the force pass
   std::vector<crush::HertzMindlinCoefficients> coefficients_;  // per type pair, (ntypes+1)^2
-  std::vector<crush::ContactStiffness> stiffness_;             // per local particle
+  std::vector<crush::ContactStiffness> stiffness_;             // per local and ghost particle
+  ContactStiffnessRecorder recorder_;
 };
 
 }  // namespace LAMMPS_NS

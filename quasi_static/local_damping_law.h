@@ -14,12 +14,13 @@ namespace crush {
 
 // The damped value of one component of a force (N) or moment (N m) acting on a body moving with
 // velocity v (m/s) or angular velocity omega (rad/s) in that component.
+// Branch-free: the sign of a velocity component is unpredictable, and a mispredicted branch per
+// component cost more than the arithmetic. x - s y with s = +-1 is exactly x -+ y.
 inline double locally_damped(double force, double velocity, double alpha)
 {
   const double magnitude = force < 0.0 ? -force : force;
-  if (velocity > 0.0) return force - alpha * magnitude;
-  if (velocity < 0.0) return force + alpha * magnitude;
-  return force;
+  const double sign = static_cast<double>((velocity > 0.0) - (velocity < 0.0));
+  return force - sign * (alpha * magnitude);
 }
 
 }  // namespace crush

@@ -4,6 +4,7 @@
   python3 test_fontainebleau.py LIGGGHTS WORKDIR CASE [RANKS]
 
 The full 100 MPa runs are scripts/fontainebleau_runs.sh (doc/results.md)."""
+import json
 import math
 import os
 import re
@@ -11,11 +12,12 @@ import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from liggghts_run import check, each_rank_count, read_dump, run_deck, variants  # noqa: E402
+from liggghts_run import check, each_rank_count, edited_deck, read_dump, run_deck, variants  # noqa: E402
 from liggghts_run import main as test_main  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 DECKS = os.path.join(ROOT, "examples", "fontainebleau")
+TIME_STEP_REFERENCE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "reference", "time_step_O2.json")
 TRACKING = 0.02        # the measured wall stress follows the ramp within 2% above 1 MPa
 N2_PARTICLES = 1340    # the N = 2 sample from the default seed
 
@@ -235,6 +237,48 @@ def case_adaptive_check_exact(liggghts, work, ranks):
     checked, steps = compare("normal_draw", {"sigma_max": 1e7, "distribution": "normal"}, 10)
     # How many it skips depends on the trajectory (the fastest body): 72% checked on 2 ranks, 96% on 1.
     check(checked < steps, "'every adaptive' checked %d of %d steps" % (checked, steps))
+
+@variants(timeout=600)
+def case_time_step_sequence(liggghts, work):
+    """fix dt/stiffness's time step along O-2 to 2 MPa with the decks' draw (bursts of events, the
+    fragments' stiff contacts), at every step of the ramp to 17 digits: exactly the sequence of
+    tests/regression/reference/time_step_O2.json, recorded when the fix still summed the contact
+    stiffnesses in a neighbour walk of its own; the hertz/scaled force pass now hands it the same
+    sums. LIGGGHTS_CRUSH_REGENERATE=1 rewrites the reference from this build."""
+    deck = edited_deck(os.path.join(DECKS, "in.oedometer"), os.path.join(work, "deck"), [
+        ("thermo_style    custom step atoms f_crush[1] f_walls[10] f_walls[9] v_K0 v_n c_gsd[12] cpu",
+         "thermo_style    custom step atoms dt f_crush[1] f_walls[10] f_walls[9] v_K0 v_n c_gsd[12]"),
+        ("thermo          100000", "thermo          1\nthermo_modify   format float %.17g")],
+        includes=["in.load_controlled"])
+    run_deck(liggghts, deck, os.path.join(work, "run"), {"sigma_max": 2e6})
+    rows, header = [], None
+    for line in open(os.path.join(work, "run", "log.liggghts")):
+        words = line.split()
+        if words[:3] == ["Step", "Atoms", "Dt"]:
+            header = words
+        elif header and len(words) == len(header) and words[0].isdigit():
+            rows.append(dict(zip(header, words)))  # the progress lines in between are skipped
+    sequence = {"step": [int(r["Step"]) for r in rows], "atoms": [int(r["Atoms"]) for r in rows],
+                "dt": [float(r["Dt"]) for r in rows]}
+    if os.environ.get("LIGGGHTS_CRUSH_REGENERATE") == "1":
+        with open(TIME_STEP_REFERENCE, "w") as f:
+            json.dump(sequence, f)
+        print("wrote %s: %d rows" % (TIME_STEP_REFERENCE, len(rows)))
+        return
+    with open(TIME_STEP_REFERENCE) as f:
+        reference = json.load(f)
+    check(len(rows) > 1000, "%d thermo rows of the ramp" % len(rows))
+    check(min(sequence["dt"]) < 0.8 * max(sequence["dt"]) and sequence["atoms"][-1] > sequence["atoms"][0],
+          "the step moved (%.4g - %.4g s) while grains broke (%d -> %d particles)"
+          % (min(sequence["dt"]), max(sequence["dt"]), sequence["atoms"][0], sequence["atoms"][-1]))
+    for k, (ref, now) in enumerate(zip(zip(reference["step"], reference["atoms"], reference["dt"]),
+                                       zip(sequence["step"], sequence["atoms"], sequence["dt"]))):
+        if ref != now:
+            raise AssertionError("row %d: reference step %d, %d particles, dt %r; this build step %d, %d particles, dt %r"
+                                 % ((k,) + ref + now))
+    check(len(rows) == len(reference["step"]), "the same %d rows: every step, particle count and dt to the bit"
+          % len(rows))
+
 
 def read_events(path):
     with open(path) as f:

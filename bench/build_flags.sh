@@ -1,0 +1,80 @@
+#!/usr/bin/env bash
+# Which compiler flags make the fastest binary: the translation units that hold the dense benchmark's
+# time (the contact models and the granular pair loop, all instantiated in lammps.cpp; the
+# integrator; neighbour lists and communication) recompiled with each candidate set and linked with
+# the build's other objects, then bench/in.dense_assembly timed with each binary and with Debian's
+# liggghts, alternated in rounds; prints the median of the in-round ratios to Debian's and their
+# spread. The rest of the binary (input parsing, output, setup) is not on the hot path.
+#   bash bench/build_flags.sh [rounds=5] [steps=1500] ["name:flags" ...]
+# Default candidates: this build's own flags (from build/), Debian's (-O2: dpkg-buildflags' CXXFLAGS,
+# which override LIGGGHTS' own CMake defaults), LIGGGHTS' Makefile default (-O2 -funroll-loops
+# -fstrict-aliasing), -O3 without unrolling, and -O2 -fno-math-errno and -march=native variants.
+set -euo pipefail
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+build=$(cd "${LIGGGHTS_CRUSH_BUILD_DIR:-$here/../build}" && pwd)
+rounds=${1:-5}
+steps=${2:-1500}
+shift $(( $# > 2 ? 2 : $# ))
+candidates=("$@")
+[ ${#candidates[@]} -gt 0 ] || candidates=(
+  "o2:-O2 -DNDEBUG"
+  "o2_unroll:-O2 -DNDEBUG -funroll-loops -fstrict-aliasing"
+  "o3:-O3 -DNDEBUG -fstrict-aliasing"
+  "o2_nomatherrno:-O2 -DNDEBUG -fno-math-errno"
+  "o2_native:-O2 -DNDEBUG -march=native")
+hot=(lammps fix_nve_sphere verlet neighbor neigh_gran neigh_half_bin fix_contact_history comm atom_vec_sphere)
+[ -x /usr/bin/liggghts ] || { echo "build_flags: needs Debian's liggghts (apt-get install liggghts)" >&2; exit 1; }
+
+out=$build/flags
+mkdir -p "$out"
+link=$(cat "$build/CMakeFiles/liggghts.dir/link.txt")
+
+# variant NAME FLAGS: the hot units compiled with FLAGS, linked as $out/NAME/liggghts.
+variant() {
+  local name=$1 flags=$2 cmd=$link
+  mkdir -p "$out/$name"
+  for unit in "${hot[@]}"; do
+    local object target
+    object=$(cd "$build" && ls CMakeFiles/*/liggghts-3.8.0/src/$unit.cpp.o | head -n 1)
+    target=${object%%/liggghts-3.8.0/*}
+    local defines includes
+    defines=$(sed -n 's/^CXX_DEFINES = //p' "$build/$target/flags.make")
+    includes=$(sed -n 's/^CXX_INCLUDES = //p' "$build/$target/flags.make")
+    (cd "$build" && eval c++ $defines $includes $flags -std=c++14 -w \
+       -c liggghts-3.8.0/src/$unit.cpp -o "$out/$name/$unit.o")
+    cmd=${cmd/$object/$out\/$name\/$unit.o}
+  done
+  (cd "$build" && eval "${cmd/-o liggghts/-o $out/$name/liggghts}")
+}
+
+names=(this_build)
+for c in "${candidates[@]}"; do
+  name=${c%%:*}; flags=${c#*:}
+  if [ ! -x "$out/$name/liggghts" ] || [ "$(cat "$out/$name/flags" 2>/dev/null)" != "$flags" ]; then
+    echo "compiling the hot units with $flags ($name)"
+    variant "$name" "$flags"
+    echo "$flags" > "$out/$name/flags"
+  fi
+  names+=("$name")
+done
+
+source "$here/dense_assembly.sh"
+declare -A ratios
+echo "10976 spheres, hertz + tangential history, $steps steps, one core, $rounds rounds"
+echo "this_build: $(sed -n 's/^CXX_FLAGS = //p' "$build/CMakeFiles/liggghts.dir/flags.make")"
+for r in $(seq "$rounds"); do
+  d=$(liggghts=/usr/bin/liggghts loop_time hertz history in.none)
+  line="round $r: Debian $d s"
+  for name in "${names[@]}"; do
+    if [ "$name" = this_build ]; then bin=$build/liggghts; else bin=$out/$name/liggghts; fi
+    t=$(liggghts=$bin loop_time hertz history in.none)
+    ratios[$name]+="$(awk -v a="$t" -v b="$d" 'BEGIN{print a/b}') "
+    line+=", $name $t s"
+  done
+  echo "$line"
+done
+for name in "${names[@]}"; do
+  printf '%s\n' ${ratios[$name]} | sort -g | awk -v name="$name" -v flags="$(cat "$out/$name/flags" 2>/dev/null || echo 'as built')" '{r[NR] = $1} END {
+    m = (NR % 2) ? r[(NR + 1) / 2] : (r[NR / 2] + r[NR / 2 + 1]) / 2
+    printf "%-16s / Debian: median %.3f (rounds %.3f - %.3f)   %s\n", name, m, r[1], r[NR], flags }'
+done
