@@ -1,14 +1,15 @@
 #!/usr/bin/env bash
 # Which compiler flags make the fastest binary: the translation units that hold the dense benchmark's
-# time (the contact models and the granular pair loop, all instantiated in lammps.cpp; the
-# integrator; neighbour lists and communication) recompiled with each candidate set and linked with
+# time (cmake/hot_path_units.txt: the contact models and the granular pair loop, all instantiated in
+# lammps.cpp; the integrator; neighbour lists and communication) recompiled with each candidate set
+# (in place of the build's own flags for them) and linked with
 # the build's other objects, then bench/in.dense_assembly timed with each binary and with Debian's
 # liggghts, alternated in rounds; prints the median of the in-round ratios to Debian's and their
 # spread. The rest of the binary (input parsing, output, setup) is not on the hot path.
 #   bash bench/build_flags.sh [rounds=5] [steps=1500] ["name:flags" ...]
-# Default candidates: this build's own flags (from build/), Debian's (-O2: dpkg-buildflags' CXXFLAGS,
-# which override LIGGGHTS' own CMake defaults), LIGGGHTS' Makefile default (-O2 -funroll-loops
-# -fstrict-aliasing), -O3 without unrolling, and -O2 -fno-math-errno and -march=native variants.
+# Default candidates: Debian's (-O2: dpkg-buildflags' CXXFLAGS, which override LIGGGHTS' own CMake
+# defaults), LIGGGHTS' Makefile default (-O2 -funroll-loops -fstrict-aliasing), -O3 without
+# unrolling, and -O2 -fno-math-errno and -march=native variants; this_build is the build as it is.
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 build=$(cd "${LIGGGHTS_CRUSH_BUILD_DIR:-$here/../build}" && pwd)
@@ -22,7 +23,7 @@ candidates=("$@")
   "o3:-O3 -DNDEBUG -fstrict-aliasing"
   "o2_nomatherrno:-O2 -DNDEBUG -fno-math-errno"
   "o2_native:-O2 -DNDEBUG -march=native")
-hot=(lammps fix_nve_sphere verlet neighbor neigh_gran neigh_half_bin fix_contact_history comm atom_vec_sphere)
+mapfile -t hot < <(grep -E '^[a-z_]+$' "$here/../cmake/hot_path_units.txt")
 [ -x /usr/bin/liggghts ] || { echo "build_flags: needs Debian's liggghts (apt-get install liggghts)" >&2; exit 1; }
 
 out=$build/flags

@@ -69,6 +69,23 @@ target_compile_options(liggghts PRIVATE -funroll-loops -fstrict-aliasing)
 target_link_libraries(liggghts PRIVATE Eigen3::Eigen)
 set_target_properties(liggghts PROPERTIES RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}")
 
+# The hot path's own flags (cmake/hot_path_units.txt): bench/build_flags.sh measured, against Debian's
+# liggghts on the dense benchmark, 1.135 with the build's -O3 -funroll-loops, 1.136 with Debian's own
+# -O2, 1.138 with LIGGGHTS' Makefile default -O2 -funroll-loops and 1.061 with -O3 without unrolling
+# (doc/accuracy_vs_cost.md). Appended after the target's flags, so they win where they differ.
+set(LIGGGHTS_CRUSH_HOT_FLAGS "-fno-unroll-loops" CACHE STRING
+    "Extra compiler flags for the translation units on a DEM step's hot path (cmake/hot_path_units.txt)")
+option(LIGGGHTS_CRUSH_NATIVE "Compile the hot path for this machine's processor (-march=native; the binary may not run elsewhere)" OFF)
+set(_hot_flags ${LIGGGHTS_CRUSH_HOT_FLAGS})
+separate_arguments(_hot_flags)
+if(LIGGGHTS_CRUSH_NATIVE)
+  list(APPEND _hot_flags -march=native)
+endif()
+file(STRINGS "${PROJECT_SOURCE_DIR}/cmake/hot_path_units.txt" _hot_units REGEX "^[a-z_]+$")
+foreach(_unit IN LISTS _hot_units)
+  set_property(SOURCE "${LIGGGHTS_SRC}/${_unit}.cpp" APPEND PROPERTY COMPILE_OPTIONS ${_hot_flags})
+endforeach()
+
 if(LIGGGHTS_CRUSH_MPI)
   find_package(MPI REQUIRED COMPONENTS CXX)
   target_link_libraries(liggghts PRIVATE MPI::MPI_CXX)

@@ -49,7 +49,8 @@ class ContactMonitor {
     return counter;
   }
 
-  void resolve()
+  // Out of line: the rare path stays out of the contact models' inlined per-contact code.
+  __attribute__((noinline)) void resolve()
   {
     const typename std::map<LAMMPS *, const Recorder *>::const_iterator it = registry().find(lmp_);
     recorder_ = it == registry().end() ? 0 : it->second;

@@ -35,6 +35,27 @@ TEST(ShearLaw, RotationKeepsMagnitudeAndLeavesTheNormal)
   EXPECT_EQ(tangent[2], 0.0);
 }
 
+TEST(ShearLaw, SmallTurnsKeepTheMagnitudeToRounding)
+{
+  // Turns of the contact plane from 1e-9 rad (a step of a quasi-static run) to 1e-2 rad: the rotated
+  // force stays tangent, keeps its magnitude to a few ulp and agrees with the projection scaled by
+  // the ratio of the magnitudes, computed here from the norms, to 1e-15 relative.
+  for (double angle : {1e-9, 1e-6, 3e-4, 9e-4, 1e-3, 1e-2}) {
+    const double en[3] = {std::sin(angle) * 0.6, std::sin(angle) * 0.8, std::cos(angle)};
+    double Fs[3] = {-2.5e-3, 7.1e-3, 0.0};
+    const double magnitude = norm(Fs);
+    double exact[3] = {Fs[0], Fs[1], Fs[2]};
+    const double d = dot(exact, en);
+    for (int k = 0; k < 3; ++k) exact[k] -= d * en[k];
+    const double scale = magnitude / norm(exact);
+    for (int k = 0; k < 3; ++k) exact[k] *= scale;
+    rotate_into_tangent_plane(Fs, en);
+    EXPECT_NEAR(norm(Fs) / magnitude, 1.0, 4e-16) << "turn " << angle;
+    EXPECT_NEAR(dot(Fs, en) / magnitude, 0.0, 1e-16) << "turn " << angle;
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(Fs[k], exact[k], 1e-15 * magnitude) << "turn " << angle;
+  }
+}
+
 TEST(ShearLaw, ZeroAndNormalVectors)
 {
   const double ez[3] = {0.0, 0.0, 1.0};
