@@ -62,20 +62,20 @@ done
 source "$here/dense_assembly.sh"
 declare -A ratios
 echo "10976 spheres, hertz + tangential history, $steps steps, one core, $rounds rounds"
-echo "this_build: $(sed -n 's/^CXX_FLAGS = //p' "$build/CMakeFiles/liggghts.dir/flags.make")"
+echo "this_build: $(sed -n 's/^CXX_FLAGS = //p' "$build/CMakeFiles/liggghts.dir/flags.make"), hot path adds" \
+     "$(sed -n 's/^LIGGGHTS_CRUSH_HOT_FLAGS:STRING=//p' "$build/CMakeCache.txt")"
 for r in $(seq "$rounds"); do
   d=$(liggghts=/usr/bin/liggghts loop_time hertz history in.none)
   line="round $r: Debian $d s"
   for name in "${names[@]}"; do
     if [ "$name" = this_build ]; then bin=$build/liggghts; else bin=$out/$name/liggghts; fi
     t=$(liggghts=$bin loop_time hertz history in.none)
-    ratios[$name]+="$(awk -v a="$t" -v b="$d" 'BEGIN{print a/b}') "
+    ratios[$name]+="$(ratio "$t" "$d") "
     line+=", $name $t s"
   done
   echo "$line"
 done
 for name in "${names[@]}"; do
-  printf '%s\n' ${ratios[$name]} | sort -g | awk -v name="$name" -v flags="$(cat "$out/$name/flags" 2>/dev/null || echo 'as built')" '{r[NR] = $1} END {
-    m = (NR % 2) ? r[(NR + 1) / 2] : (r[NR / 2] + r[NR / 2 + 1]) / 2
-    printf "%-16s / Debian: median %.3f (rounds %.3f - %.3f)   %s\n", name, m, r[1], r[NR], flags }'
+  # shellcheck disable=SC2086  # the ratios are one word each
+  summary "$name ($(cat "$out/$name/flags" 2>/dev/null || echo 'as built')) / Debian's" ${ratios[$name]}
 done

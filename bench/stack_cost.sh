@@ -42,14 +42,6 @@ lammps_time() {
   awk '/^Loop time of/ {print $4}' "$work/lammps.txt"
 }
 
-# summary NAME RATIO...: the median of the in-round ratios and their range.
-summary() {
-  local name=$1; shift
-  printf '%s\n' "$@" | sort -g | awk -v name="$name" '{r[NR] = $1} END {
-    m = (NR % 2) ? r[(NR + 1) / 2] : (r[NR / 2] + r[NR / 2 + 1]) / 2
-    printf "%-62s median %.3f   (rounds: %.3f - %.3f)\n", name, m, r[1], r[NR] }'
-}
-
 echo "10976 spheres, one core; $rounds rounds; liggghts $steps steps, LAMMPS $lammps_steps steps"
 echo "binary: $liggghts"
 bare=(); stack=(); vs_lammps=()
@@ -57,15 +49,15 @@ for r in $(seq "$rounds"); do
   d=$(debian_time hertz history in.none)
   o=$(loop_time hertz history in.none)
   s=$(loop_time hertz/scaled mindlin/scaled in.decks_stack)
-  bare+=("$(awk -v a="$o" -v b="$d" 'BEGIN{print a/b}')")
-  stack+=("$(awk -v a="$s" -v b="$d" 'BEGIN{print a/b}')")
+  bare+=("$(ratio "$o" "$d")")
+  stack+=("$(ratio "$s" "$d")")
   echo "round $r: Debian's liggghts $d s, this build bare $o s, this build with the decks' stack $s s"
 done
 steps=$lammps_steps
 for r in $(seq "$rounds"); do
   l=$(lammps_time)
   o=$(loop_time hertz/scaled mindlin/scaled in.none)
-  vs_lammps+=("$(awk -v a="$o" -v b="$l" 'BEGIN{print a/b}')")
+  vs_lammps+=("$(ratio "$o" "$l")")
   echo "round $r: Debian's LAMMPS gran/hertz/history $l s, this build hertz/scaled + mindlin/scaled $o s"
 done
 echo

@@ -14,8 +14,8 @@ namespace crush {
 
 // The damped value of one component of a force (N) or moment (N m) acting on a body moving with
 // velocity v (m/s) or angular velocity omega (rad/s) in that component.
-// Branch-free: the sign of a velocity component is unpredictable, and a mispredicted branch per
-// component cost more than the arithmetic. x - s y with s = +-1 is exactly x -+ y.
+// Branch-free, as the sign of a velocity component is unpredictable (its gain was not measured on
+// its own); x - s y with s = +-1 is exactly x -+ y, so the result is PFC's rule to the bit.
 inline double locally_damped(double force, double velocity, double alpha)
 {
   const double magnitude = force < 0.0 ? -force : force;
