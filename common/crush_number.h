@@ -12,6 +12,8 @@ namespace crush {
 
 // True, with value set, where text is a finite number in full.
 bool parse_finite(const std::string &text, double &value);
+// True, with value set, where text is a whole number (optionally signed) in full, within long long.
+bool parse_whole(const std::string &text, long long &value);
 
 }  // namespace crush
 

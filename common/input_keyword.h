@@ -32,6 +32,12 @@ template <typename Parse> void fix_input(Fix *fix, Error *error, Parse parse)
   }
 }
 
+// A legal but unlikely value: a warning that names the fix, from proc 0 as LIGGGHTS warns.
+inline void fix_warning(Fix *fix, Error *error, int me, const std::string &what)
+{
+  if (me == 0) error->warning(FLERR, (std::string("Fix ") + fix->style + " (id " + fix->id + "): " + what).c_str());
+}
+
 template <typename Parse> void compute_input(Compute *compute, Error *error, Parse parse)
 {
   try {

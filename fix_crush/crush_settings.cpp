@@ -5,6 +5,8 @@
 #include "crush_model_error.h"
 #include "crush_keywords.h"
 
+#include <sstream>
+
 namespace crush {
 
 double CrushSettings::size_scaled(double s, double d) const
@@ -18,13 +20,14 @@ CrushSettings parse_crush_settings(const std::vector<std::string> &args)
   long seed = 0, every = 1;
   int orientation = 0, distribution = static_cast<int>(c.distribution), layout = static_cast<int>(c.layout);
   KeywordTable t;
-  t.number("sigma_lim0", "a strength > 0 (Pa)", positive(), c.sigma_lim0, true)
-   .number("cv", "a coefficient of variation >= 0", at_least(0.0), c.cv, true)
-   .number("weibull_m", "a Weibull modulus > 0", positive(), c.weibull_m, true)
-   .number("d0", "a reference diameter > 0 (m)", positive(), c.d0, true)
+  // Ranges: what has a physical meaning (doc/fix_crush.txt); suspicious_settings() warns inside them.
+  t.number("sigma_lim0", "a strength in [1e3, 1e30] Pa", in_range(1e3, 1e30, true), c.sigma_lim0, true)
+   .number("cv", "a coefficient of variation in [0, 10]", in_range(0.0, 10.0, true), c.cv, true)
+   .number("weibull_m", "a Weibull modulus in [0.5, 1000]", in_range(0.5, 1000.0, true), c.weibull_m, true)
+   .number("d0", "a reference diameter in [1e-7, 10] m", in_range(1e-7, 10.0, true), c.d0, true)
    .integer("seed", "a positive integer", 1, seed, true)
-   .number("scale", "an upscaling factor N > 0", positive(), c.scale_factor)
-   .number("dmin", "a diameter >= 0 (m)", at_least(0.0), c.dmin)
+   .number("scale", "an upscaling factor N in (0, 1e4]", open_closed(0.0, 1e4), c.scale_factor)
+   .number("dmin", "a diameter in [0, 10] m", in_range(0.0, 10.0, true), c.dmin)
    .add("every", "an integer >= 1 or 'adaptive'", [&](const std::vector<std::string> &w, std::size_t at) {
      if (at + 1 < w.size() && w[at + 1] == "adaptive") {
        c.adaptive = true;
@@ -40,7 +43,7 @@ CrushSettings parse_crush_settings(const std::vector<std::string> &args)
            distribution)
    .yes_no("size_effect", c.size_effect)
    .choice("layout", {"fourteen", "tetrahedral"}, layout)
-   .number("fines_dimension", "a fractal dimension < 3", below(3.0), c.fines_dimension)
+   .number("fines_dimension", "a fractal dimension in [0, 3)", in_range(0.0, 3.0, false), c.fines_dimension)
    .number("rayleigh_fraction", "a fraction in (0, 1]", open_closed(0.0, 1.0), c.rayleigh_fraction)
    .text("log", "a file name", c.log_file)
    .text("region", "a region ID", c.region_id)
@@ -52,6 +55,36 @@ CrushSettings parse_crush_settings(const std::vector<std::string> &args)
   c.distribution = static_cast<StrengthDistribution>(distribution);
   c.layout = static_cast<FragmentLayout>(layout);
   return c;
+}
+
+namespace {
+std::string number_text(double v)
+{
+  std::ostringstream out;
+  out << v;
+  return out.str();
+}
+}  // namespace
+
+std::vector<std::string> suspicious_settings(const CrushSettings &c)
+{
+  std::vector<std::string> warnings;
+  if (c.sigma_lim0 < 1e5)
+    warnings.push_back("sigma_lim0 " + number_text(c.sigma_lim0) + " Pa is below 100 kPa, weaker than any grain "
+                       "material: most grains break at their first contact (the paper's is 5e9 Pa; kPa given for Pa?)");
+  if (c.cv > 2.0)
+    warnings.push_back("cv above 2: most of the normal draw lies below zero and is clipped or truncated, so the "
+                       "strengths no longer have the mean and spread asked for");
+  if (c.weibull_m < 1.0 || c.weibull_m > 50.0)
+    warnings.push_back("weibull_m outside [1, 50], the range measured on sand grains: the size effect "
+                       "(d/(N d0))^(-3/m) is then extreme or absent");
+  if (c.scale_factor < 1.0)
+    warnings.push_back("scale below 1: the particles are smaller than the sand's (N is an upscaling factor)");
+  if (c.fines_dimension < 2.0)
+    warnings.push_back("fines_dimension below 2: crushed sands measure 2.5 to 2.9");
+  if (c.rayleigh_fraction > 0.5)
+    warnings.push_back("rayleigh_fraction above 0.5: the time-step check allows steps near the stability limit");
+  return warnings;
 }
 
 }  // namespace crush

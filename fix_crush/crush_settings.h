@@ -45,6 +45,8 @@ struct CrushSettings {
 
 // Parses the keyword/value list that follows 'fix ID group crush'.
 CrushSettings parse_crush_settings(const std::vector<std::string> &args);
+// Values inside the ranges that are still unlikely to be meant (one message each, for warnings).
+std::vector<std::string> suspicious_settings(const CrushSettings &settings);
 
 }  // namespace crush
 

@@ -5,7 +5,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
+#include <limits>
+#include <fstream>
+#include <sstream>
 #include <string>
 
 #include "atom.h"
@@ -14,6 +18,7 @@
 #include "crush_breakage_limit.h"
 #include "crush_check_bound.h"
 #include "crush_constants.h"
+#include "crush_csv_rows.h"
 #include "crush_fragments.h"
 #include "crush_model_error.h"
 #include "domain.h"
@@ -38,10 +43,11 @@ namespace {
 
 enum Output { EVENTS = 0, REMOVED_VOLUME = 1, LARGEST_RATIO = 2, REPLACE_SECONDS = 3, CHECKED_STEPS = 4, NOUTPUT = 5 };  // vector
 
-crush::CrushSettings parse(Fix *fix, Error *error, int narg, char **arg)
+crush::CrushSettings parse(Fix *fix, Error *error, int me, int narg, char **arg)
 {
   crush::CrushSettings settings;
   fix_input(fix, error, [&] { settings = crush::parse_crush_settings(std::vector<std::string>(arg + 3, arg + narg)); });
+  for (const std::string &w : crush::suspicious_settings(settings)) fix_warning(fix, error, me, w);
   return settings;
 }
 
@@ -67,14 +73,15 @@ double store_ratios(int n, double *load, const double *strength_term, const int 
 
 FixCrush::FixCrush(LAMMPS *lmp, int narg, char **arg) :
   Fix(lmp, narg, arg),
-  settings_(parse(this, error, narg, arg)),
+  settings_(parse(this, error, comm->me, narg, arg)),
   strength_(settings_.distribution, settings_.sigma_lim0, settings_.cv, settings_.weibull_m, settings_.seed),
   nfrag_(static_cast<int>(crush::fragment_layout(settings_.layout, 1.0).size())),
   region_(NULL), fix_data_(NULL), data_id_(NULL), limit_factor_(NULL), irregular_(NULL), log_(NULL),
   events_total_(0), removed_volume_(0.0), max_ratio_(0.0), local_max_ratio_(0.0), max_ratio_step_(-1),
   smallest_fragment_diameter_(0.0), initial_largest_diameter_(0.0), next_tag_(1), replace_seconds_(0.0),
   particle_count_(0), initialized_(false), refresh_needed_(true), recording_(true), box_reference_{0.0, 0.0, 0.0},
-  allowed_displacement_(0.0), force_check_(true), check_now_(true), checked_steps_(0)
+  allowed_displacement_(0.0), force_check_(true), check_now_(true), checked_steps_(0), restart_step_(-1),
+  log_opened_(false)
 {
   if (!atom->radius_flag || !atom->rmass_flag || !atom->density_flag)
     error->all(FLERR, "fix crush needs 'atom_style granular' (radius, mass and density per atom)");
@@ -100,16 +107,43 @@ FixCrush::FixCrush(LAMMPS *lmp, int narg, char **arg) :
   recorder_.limit_factor = limit_factor_;
   ContactLoadMonitor::attach(lmp, &recorder_);
 
-  if (comm->me == 0 && !settings_.log_file.empty()) {
-    log_ = fopen(settings_.log_file.c_str(), "w");
-    if (!log_) {
-      const std::string msg = "fix crush: cannot open the event log '" + settings_.log_file + "' (keyword 'log')";
-      error->one(FLERR, msg.c_str());
+}
+
+// At the first init, once restart() has said whether this run continues one: a continued run keeps
+// the rows of the steps before the restart's (the killed run may have logged later ones; the events
+// pending at the restart are logged again when replaced), a new run starts the file.
+void FixCrush::open_log()
+{
+  log_opened_ = true;
+  if (comm->me != 0 || settings_.log_file.empty()) return;
+  std::string kept;
+  bool continued = false;
+  if (restart_step_ >= 0) {
+    std::ifstream in(settings_.log_file, std::ios::binary);
+    if (in) {
+      std::ostringstream all;
+      all << in.rdbuf();
+      int dropped = 0;
+      kept = crush::trim_rows(all.str(), restart_step_, true, dropped);
+      continued = kept.find('\n') != std::string::npos;
+      if (continued && screen)
+        fprintf(screen, "fix crush: continuing the event log %s from step " BIGINT_FORMAT " (%d rows of later steps dropped)\n",
+                settings_.log_file.c_str(), restart_step_, dropped);
     }
+  }
+  log_ = fopen(settings_.log_file.c_str(), "w");
+  if (!log_) {
+    const std::string msg = "fix crush: cannot open the event log '" + settings_.log_file + "' (keyword 'log')";
+    error->one(FLERR, msg.c_str());
+  }
+  if (continued) {
+    fputs(kept.c_str(), log_);
+  } else {
     fprintf(log_, "step,tag,diameter,generation,force_ratio,x,y,z");
     for (int f = 1; f <= nfrag_; f++) fprintf(log_, ",fragment_%d", f);
     fprintf(log_, "\n");
   }
+  fflush(log_);
 }
 
 FixCrush::~FixCrush()
@@ -145,7 +179,9 @@ void FixCrush::init()
   if (force->newton_pair)
     error->all(FLERR, "fix crush needs 'newton off': each particle must see all of its contacts");
   check_pair_style();
+  check_particles();
   setup_limit_factors();
+  if (!log_opened_) open_log();
   if (settings_.adaptive) find_moving_walls();
   initialized_ = true;
   fix_data_ = static_cast<FixPropertyAtom *>(
@@ -172,6 +208,29 @@ bool FixCrush::may_break(int i) const
 bool FixCrush::breakable(int i) const
 {
   return (atom->mask[i] & groupbit) && 2.0 * atom->radius[i] >= settings_.dmin;
+}
+
+// A particle of the group without a positive, finite size or density has no strength (eq. 10) and no
+// fragments: the run stops naming the first such particle, before any of it is drawn.
+void FixCrush::check_particles() const
+{
+  int first = std::numeric_limits<int>::max();
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(atom->mask[i] & groupbit)) continue;
+    const double r = atom->radius[i], rho = atom->density[i];
+    if (!(r > 0.0 && std::isfinite(r) && rho > 0.0 && std::isfinite(rho))) first = std::min(first, static_cast<int>(atom->tag[i]));
+  }
+  int first_all = 0;
+  MPI_Allreduce(&first, &first_all, 1, MPI_INT, MPI_MIN, world);
+  if (first_all == std::numeric_limits<int>::max()) return;
+  char msg[512] = "";
+  const int i = atom->map(first_all);
+  if (i >= 0 && i < atom->nlocal)
+    snprintf(msg, sizeof(msg), "Fix crush (id %s): particle %d has radius %g m and density %g kg/m^3: both must be "
+             "finite and > 0 (set ... diameter, density; create_atoms; read_data)", id, first_all, atom->radius[i],
+             atom->density[i]);
+  if (msg[0]) error->one(FLERR, msg);
+  MPI_Barrier(world);  // the owner stops the run
 }
 
 void FixCrush::check_pair_style() const
@@ -220,9 +279,24 @@ void FixCrush::draw_missing_strengths()
   const int *tag = atom->tag;
   const double *radius = atom->radius;
   for (int i = 0; i < atom->nlocal; i++)
-    if (data[i][STRENGTH] < 0.0)
-      data[i][STRENGTH] = settings_.size_scaled(strength_.draw(tag[i], static_cast<int>(data[i][GENERATION])),
-                                                2.0 * radius[i]);
+    if (data[i][STRENGTH] < 0.0) {
+      try {
+        data[i][STRENGTH] = settings_.size_scaled(strength_.draw(tag[i], static_cast<int>(data[i][GENERATION])),
+                                                  2.0 * radius[i]);
+      } catch (const crush::ModelError &e) {
+        particle_error(tag[i], radius[i], atom->density[i], "drawing its strength", e);
+      }
+    }
+}
+
+// A plain-model error about one particle: the run stops naming it (this processor alone may see it).
+void FixCrush::particle_error(tagint tag, double radius, double density, const char *doing,
+                              const crush::ModelError &e) const
+{
+  char msg[1024];
+  snprintf(msg, sizeof(msg), "Fix crush (id %s): particle %ld (radius %g m, density %g kg/m^3), %s: %s", id,
+           static_cast<long>(tag), radius, density, doing, e.what());
+  error->one(FLERR, msg);
 }
 
 void FixCrush::setup_pre_force(int vflag)
@@ -488,7 +562,12 @@ double FixCrush::create_fragments(int mother, tagint first_tag, int generation)
     vm[k] = atom->v[mother][k];
     wm[k] = atom->omega[mother][k];
   }
-  std::vector<crush::Fragment> fragments = crush::fragment_layout(settings_.layout, R);
+  std::vector<crush::Fragment> fragments;
+  try {
+    fragments = crush::fragment_layout(settings_.layout, R);
+  } catch (const crush::ModelError &e) {
+    particle_error(tag, R, density, "replacing it by fragments", e);
+  }
   double removed = crush::sphere_volume(2.0 * R);
   if (settings_.random_orientation)
     fragments = crush::rotated(fragments, crush::random_rotation(settings_.seed, static_cast<std::uint64_t>(tag)));
@@ -514,7 +593,11 @@ double FixCrush::create_fragments(int mother, tagint first_tag, int generation)
     for (int m = 0; m < modify->nfix; m++)
       if (modify->fix[m]->create_attribute) modify->fix[m]->set_arrays(n);
     double *data = fix_data_->array_atom[n];
-    data[STRENGTH] = settings_.size_scaled(strength_.draw(atom->tag[n], generation), 2.0 * r);
+    try {
+      data[STRENGTH] = settings_.size_scaled(strength_.draw(atom->tag[n], generation), 2.0 * r);
+    } catch (const crush::ModelError &e) {
+      particle_error(atom->tag[n], r, density, "drawing the strength of this fragment", e);
+    }
     data[GENERATION] = generation;
     data[RATIO] = 0.0;
   }
@@ -613,8 +696,15 @@ double FixCrush::compute_vector(int n)
 // The global state, then the pending events (a restart written at the end of a step in which grains
 // broke continues with their replacement, as the uninterrupted run does), as bytes.
 namespace {
+// The section starts with a name and a version: a file of another layout is refused by name.
+const char kRestartName[8] = "crush";
+const int kRestartVersion = 2;
+struct RestartHead {
+  char name[8];
+  int version;
+};
 struct RestartState {
-  bigint events_total, npending;
+  bigint events_total, npending, checked_steps;
   double removed_volume, smallest_fragment_diameter, initial_largest_diameter;
   tagint next_tag;
   std::uint64_t seed;
@@ -623,11 +713,14 @@ struct RestartState {
 
 void FixCrush::write_restart(FILE *fp)
 {
-  const RestartState state = {events_total_, static_cast<bigint>(pending_.size()), removed_volume_,
+  const RestartState state = {events_total_, static_cast<bigint>(pending_.size()), checked_steps_, removed_volume_,
                               smallest_fragment_diameter_, initial_largest_diameter_, next_tag_, settings_.seed};
+  RestartHead head = {{0}, kRestartVersion};
+  std::memcpy(head.name, kRestartName, sizeof(kRestartName));
   if (comm->me == 0) {
-    int size = static_cast<int>(sizeof(RestartState) + pending_.size() * sizeof(Event));
+    int size = static_cast<int>(sizeof(RestartHead) + sizeof(RestartState) + pending_.size() * sizeof(Event));
     fwrite(&size, sizeof(int), 1, fp);
+    fwrite(&head, sizeof(RestartHead), 1, fp);
     fwrite(&state, sizeof(RestartState), 1, fp);
     fwrite(pending_.data(), sizeof(Event), pending_.size(), fp);
   }
@@ -635,9 +728,23 @@ void FixCrush::write_restart(FILE *fp)
 
 void FixCrush::restart(char *buf)
 {
+  RestartHead head;
+  std::memcpy(&head, buf, sizeof(RestartHead));
+  if (std::memcmp(head.name, kRestartName, sizeof(kRestartName)) != 0) {
+    error->fix_error(FLERR, this, "the restart file's fix crush section has no version: it was written by an "
+                                  "older liggghts-crush, or is not a fix crush section");
+  } else if (head.version != kRestartVersion) {
+    char msg[256];
+    snprintf(msg, sizeof(msg), "the restart file's fix crush section is version %d; this build reads version %d",
+             head.version, kRestartVersion);
+    error->fix_error(FLERR, this, msg);
+  }
+  buf += sizeof(RestartHead);
+  restart_step_ = update->ntimestep;
   RestartState state;
   std::memcpy(&state, buf, sizeof(RestartState));
   events_total_ = state.events_total;
+  checked_steps_ = state.checked_steps;
   removed_volume_ = state.removed_volume;
   smallest_fragment_diameter_ = state.smallest_fragment_diameter;
   initial_largest_diameter_ = state.initial_largest_diameter;

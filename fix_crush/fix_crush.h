@@ -24,6 +24,7 @@ FixStyle(crush,FixCrush)
 #include <utility>
 #include <vector>
 
+#include "crush_model_error.h"
 #include "crush_settings.h"
 #include "crush_strength.h"
 #include "fix.h"
@@ -82,6 +83,10 @@ class FixCrush : public Fix {
   double smallest_radius() const;
   std::vector<Event> gather_events(const std::vector<int> &local_mothers);
   void log_events(const std::vector<Event> &events, tagint first_new_tag);
+  void open_log();
+  void check_particles() const;
+  void particle_error(tagint tag, double radius, double density, const char *doing,
+                      const crush::ModelError &e) const;
   void replace_mothers();
   std::vector<std::pair<std::size_t, int>> owned_mothers() const;
   void check_books(double added, double replaced) const;
@@ -130,6 +135,8 @@ class FixCrush : public Fix {
   bool initialized_;                 // init() ran: 'run pre no' right after the fix skips it
   bool refresh_needed_;              // clear every load slot at the next pre_force (see refresh_recorder)
   bool recording_;                   // the recorder is attached (with 'every' > 1: on check steps only)
+  bigint restart_step_;              // the step of the restart file this run continues (-1: none)
+  bool log_opened_;                  // open_log() ran (at the first init)
 };
 
 }  // namespace LAMMPS_NS

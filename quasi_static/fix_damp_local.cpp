@@ -4,6 +4,7 @@
 #include "fix_damp_local.h"
 
 #include "atom.h"
+#include "comm.h"
 #include "error.h"
 #include "input_keyword.h"
 #include "local_damping_law.h"
@@ -24,6 +25,9 @@ FixDampLocal::FixDampLocal(LAMMPS *lmp, int narg, char **arg) :
     if (damp_moments_ && !atom->torque_flag)
       throw crush::ModelError("'moments yes' needs an atom style with torque (granular)");
   });
+  if (alpha_ > 0.8)
+    fix_warning(this, error, comm->me, "alpha above 0.8: the damping then shapes the response (PFC's default is "
+                                       "0.7, the paper's quasi-static runs use 0.05)");
 }
 
 int FixDampLocal::setmask()

@@ -34,16 +34,23 @@ FixDtStiffness::FixDtStiffness(LAMMPS *lmp, int narg, char **arg) :
     crush::KeywordTable t;
     t.number("fraction", "a value in (0, 1] (0.5 is safe)", crush::open_closed(0.0, 1.0), fraction_, true)
      .integer("every", "a number of steps >= 1", 1, every)
-     .number("growth", "a factor > 1", [](double v) { return v > 1.0; }, growth_)
-     .number("max", "a time step > 0 (s)", crush::positive(), dt_max_);
+     .number("growth", "a factor in (1, 10]", crush::open_closed(1.0, 10.0), growth_)
+     .number("max", "a time step in (0, 1] s", crush::open_closed(0.0, 1.0), dt_max_);
     t.parse(words(narg, arg), 3);
     every_ = static_cast<int>(every);
   });
+  if (fraction_ > 0.5)
+    fix_warning(this, error, comm->me, "fraction above 0.5: the step comes close to the stability limit of the "
+                                       "stiffest contact (0.5 is safe)");
+  if (growth_ > 1.5)
+    fix_warning(this, error, comm->me, "growth above 1.5: after a stiff contact opens the step may jump past what "
+                                       "the next contact allows");
   if (!atom->radius_flag || !atom->rmass_flag)
     error->fix_error(FLERR, this, "needs atom_style granular (radius and mass)");
   scalar_flag = 1;
   global_freq = 1;
   extscalar = 0;
+  restart_global = 1;
 }
 
 FixDtStiffness::~FixDtStiffness()
@@ -195,6 +202,47 @@ void FixDtStiffness::set_time_step(double dt)
   update->dt = dt;
   force->pair->reset_dt();
   for (int i = 0; i < modify->nfix; i++) modify->fix[i]->reset_dt();
+}
+
+// LIGGGHTS 3.8.0's restart header holds neither the time step nor the elapsed time: this fix, which
+// sets the step, carries both, so that a resumed run goes on with the step and the clock it had.
+namespace {
+const int kRestartVersion = 1;
+struct RestartState {
+  int version;
+  double dt, time, dt_start;
+  int warned;
+};
+}  // namespace
+
+void FixDtStiffness::write_restart(FILE *fp)
+{
+  const RestartState state = {kRestartVersion, update->dt, update->atime + (update->ntimestep - update->atimestep) * update->dt,
+                              dt_start_, warned_ ? 1 : 0};
+  if (comm->me == 0) {
+    int size = sizeof(RestartState);
+    fwrite(&size, sizeof(int), 1, fp);
+    fwrite(&state, sizeof(RestartState), 1, fp);
+  }
+}
+
+void FixDtStiffness::restart(char *buf)
+{
+  RestartState state;
+  std::memcpy(&state, buf, sizeof(RestartState));
+  if (state.version != kRestartVersion) {
+    char msg[256];
+    snprintf(msg, sizeof(msg), "the restart file's fix dt/stiffness section is version %d; this build reads version %d",
+             state.version, kRestartVersion);
+    error->fix_error(FLERR, this, msg);
+  }
+  if (!(state.dt > 0.0) || !std::isfinite(state.time))
+    error->fix_error(FLERR, this, "the restart file's time step or time is not a finite positive number");
+  update->dt = state.dt;
+  update->atime = state.time;
+  update->atimestep = update->ntimestep;
+  dt_start_ = state.dt_start;
+  warned_ = state.warned != 0;
 }
 
 double FixDtStiffness::compute_scalar()

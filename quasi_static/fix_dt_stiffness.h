@@ -19,6 +19,7 @@ FixStyle(dt/stiffness,FixDtStiffness)
 #ifndef LMP_FIX_DT_STIFFNESS_H
 #define LMP_FIX_DT_STIFFNESS_H
 
+#include <cstdio>
 #include <vector>
 
 #include "contact_stiffness_monitor.h"
@@ -38,6 +39,8 @@ class FixDtStiffness : public Fix {
   void pre_force(int);
   void end_of_step();
   double compute_scalar();
+  void write_restart(FILE *);
+  void restart(char *);
 
  private:
   void collect_stiffness(bool update_now);

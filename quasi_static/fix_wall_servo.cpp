@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <string>
 
@@ -28,6 +29,7 @@ using namespace FixConst;
 
 namespace {
 const char *const kAxis = "xyz";
+const double kMaxStress = 1e12;  // Pa: ten times the strength of the strongest solids
 }  // namespace
 
 FixWallServo::FixWallServo(LAMMPS *lmp, int narg, char **arg) :
@@ -42,6 +44,7 @@ FixWallServo::FixWallServo(LAMMPS *lmp, int narg, char **arg) :
     last_move_[a] = 0.0;
   }
   fix_input(this, error, [&] { parse_arguments(words(narg, arg)); });
+  warn_suspicious();
   target_ = sigma_start_;
   ramp_steps_ = load_rate_ > 0.0 ? crush::LoadRamp(load_rate_, sigma_ref_).steps_to_reach(sigma_start_, sigma_max_) : 0;
 
@@ -77,24 +80,27 @@ void FixWallServo::parse_arguments(const std::vector<std::string> &args)
     wall_type_ = static_cast<int>(v);
     return std::size_t(1);
   }, true);
-  for (int a = 0; a < 3; a++) t.add(std::string(1, kAxis[a]), "fixed, ramp, stress S (Pa, > 0) or velocity V (m/s)",
+  for (int a = 0; a < 3; a++) t.add(std::string(1, kAxis[a]), "fixed, ramp, stress S (Pa, in (0, 1e12]) or velocity V "
+                                   "(m/s, |V| <= 1000)",
                                    [this, &t, a](const std::vector<std::string> &w, std::size_t at) {
     return read_mode(t, a, w, at);
   });
-  t.add("ramp", "sigma_start sigma_max load_rate [sigma_ref] (Pa, 0 < sigma_start <= sigma_max)",
+  t.add("ramp", "sigma_start sigma_max load_rate [sigma_ref] (Pa, 0 < sigma_start <= sigma_max <= 1e12; "
+               "load_rate in (0, 100])",
         [this, &t](const std::vector<std::string> &w, std::size_t at) {
     sigma_start_ = t.value("ramp", w, at + 1);
     sigma_max_ = t.value("ramp", w, at + 2);
     load_rate_ = t.value("ramp", w, at + 3);
     std::size_t read = 3;
     if (at + 4 < w.size() && !t.is_keyword(w[at + 4])) sigma_ref_ = t.value("ramp", w, at + ++read);
-    if (!(sigma_start_ > 0.0 && sigma_max_ >= sigma_start_)) t.fail("ramp", w[at + 1] + " " + w[at + 2]);
+    if (!(sigma_start_ > 0.0 && sigma_max_ >= sigma_start_ && sigma_max_ <= kMaxStress)) t.fail("ramp", w[at + 1] + " " + w[at + 2]);
+    if (!(load_rate_ > 0.0 && load_rate_ <= 100.0)) t.fail("ramp", w[at + 3]);
     crush::LoadRamp(load_rate_, sigma_ref_).steps_to_reach(sigma_start_, sigma_start_);  // checks L_R, sigma_ref
     return read;
   });
   t.ascending("outputs", "ascending stresses > 0 (Pa)", outputs_);
   t.number("alpha", "a value in (0, 1]", crush::open_closed(0.0, 1.0), alpha_)
-   .number("max_step", "a length > 0 (m)", crush::positive(), max_step_)
+   .number("max_step", "a length in (0, 1] m", crush::open_closed(0.0, 1.0), max_step_)
    .number("progress", "a percentage in (0, 100]", crush::open_closed(0.0, 100.0), progress_percent_);
   t.parse(args, 9);
 
@@ -104,6 +110,22 @@ void FixWallServo::parse_arguments(const std::vector<std::string> &args)
     if (mode_[a] == RAMP && !(load_rate_ > 0.0))
       throw crush::ModelError(std::string("axis ") + kAxis[a] +
                               " is 'ramp' but no 'ramp sigma_start sigma_max load_rate' is given");
+}
+
+// Legal values that are unlikely to be meant.
+void FixWallServo::warn_suspicious()
+{
+  if (load_rate_ > 1.0)
+    fix_warning(this, error, comm->me, "ramp load_rate above 1: the stress grows by more than sigma_ref per step, "
+                                       "too fast for a quasi-static test (the paper's L_R is 0.05 to 0.1)");
+  for (int a = 0; a < 3; a++) {
+    if ((mode_[a] == STRESS && value_[a] > 1e10) || (mode_[a] == RAMP && sigma_max_ > 1e10))
+      fix_warning(this, error, comm->me, std::string("axis ") + kAxis[a] + ": a stress above 10 GPa, beyond the "
+                                                                           "crushing of any sand");
+    if (mode_[a] == VELOCITY && std::fabs(value_[a]) > 10.0)
+      fix_warning(this, error, comm->me, std::string("axis ") + kAxis[a] + ": a wall faster than 10 m/s is an impact, "
+                                                                           "not a quasi-static test");
+  }
 }
 
 // x|y|z fixed | ramp | stress S | velocity V
@@ -119,7 +141,8 @@ std::size_t FixWallServo::read_mode(const crush::KeywordTable &t, int axis, cons
   if (mode != "stress" && mode != "velocity") t.fail(name, mode);
   mode_[axis] = mode == "stress" ? STRESS : VELOCITY;
   value_[axis] = t.value(name, w, at + 2);
-  if (mode == "stress" && !(value_[axis] > 0.0)) t.fail(name, mode + " " + w[at + 2]);
+  if (mode == "stress" && !(value_[axis] > 0.0 && value_[axis] <= kMaxStress)) t.fail(name, mode + " " + w[at + 2]);
+  if (mode == "velocity" && !(std::fabs(value_[axis]) <= 1000.0)) t.fail(name, mode + " " + w[at + 2]);
   return 2;
 }
 
@@ -222,7 +245,8 @@ void FixWallServo::move_walls(const double *force, const double *force_before, c
       ramp_started_ = true;
       ramp_wall_start_ = MPI_Wtime();
       ramp_started_steps_ = ramp_done_;
-      next_report_ = ramp_done_ + progress_percent_ * 0.01 * ramp_steps_;
+      // a resumed run keeps the uninterrupted run's report points
+      if (next_report_ <= ramp_done_) next_report_ = ramp_done_ + progress_percent_ * 0.01 * ramp_steps_;
     }
     ramp_done_ += 1.0;
     if (progress_percent_ > 0.0 && (ramp_done_ >= next_report_ || target_ >= sigma_max_)) {
@@ -333,21 +357,89 @@ double FixWallServo::compute_vector(int n)
   return (wall_[1] - wall_[0]) * (wall_[3] - wall_[2]) * (wall_[5] - wall_[4]);
 }
 
+// Everything the servo carries from step to step, so that a run resumed from a restart file moves the
+// walls as the uninterrupted one (the forces themselves are recomputed at setup). Versioned: a file
+// of another layout is refused by name.
+namespace {
+const int kRestartVersion = 2;
+struct RestartState {
+  int version;
+  int mode[3];
+  double value[3], ramp[4], alpha;  // the settings: ramp = sigma_start, sigma_max, load_rate, sigma_ref
+  double wall[6], target, ramp_done, next_report, max_step, last_move[3];
+  crush::StiffnessEstimate sample_stiffness[3];
+  crush::DriftEstimate drift[3];
+};
+}  // namespace
+
 void FixWallServo::write_restart(FILE *fp)
 {
-  double list[7] = {wall_[0], wall_[1], wall_[2], wall_[3], wall_[4], wall_[5], target_};
+  RestartState state;
+  state.version = kRestartVersion;
+  settings_state(state.mode, state.value, state.ramp, state.alpha);
+  for (int k = 0; k < 6; k++) state.wall[k] = wall_[k];
+  state.target = target_;
+  state.ramp_done = ramp_done_;
+  state.next_report = next_report_;
+  state.max_step = max_step_;
+  for (int a = 0; a < 3; a++) {
+    state.last_move[a] = last_move_[a];
+    state.sample_stiffness[a] = sample_stiffness_[a];
+    state.drift[a] = drift_[a];
+  }
   if (comm->me == 0) {
-    int size = 7 * sizeof(double);
+    int size = sizeof(RestartState);
     fwrite(&size, sizeof(int), 1, fp);
-    fwrite(list, sizeof(double), 7, fp);
+    fwrite(&state, sizeof(RestartState), 1, fp);
   }
 }
 
 void FixWallServo::restart(char *buf)
 {
-  const double *list = reinterpret_cast<const double *>(buf);
-  for (int k = 0; k < 6; k++) wall_[k] = list[k];
-  target_ = list[6];
-  if (load_rate_ > 0.0)
-    ramp_done_ = static_cast<double>(crush::LoadRamp(load_rate_, sigma_ref_).steps_to_reach(sigma_start_, target_));
+  int version = 0;
+  std::memcpy(&version, buf, sizeof(int));
+  if (version != kRestartVersion) {
+    char msg[256];
+    snprintf(msg, sizeof(msg), "the restart file's fix wall/servo section is version %d; this build reads version %d "
+             "(a file written before the sections had versions holds only the wall positions)", version, kRestartVersion);
+    error->fix_error(FLERR, this, msg);
+  }
+  RestartState state;
+  std::memcpy(&state, buf, sizeof(RestartState));
+  for (int k = 0; k < 6; k++) wall_[k] = state.wall[k];
+  target_ = state.target;
+  // The same settings: this fix continues the one that wrote the file (a checkpoint). Other settings
+  // (a deck that prepared a sample at one stress and loads it another way): the walls' positions and
+  // the stress reached carry over, the servo starts afresh.
+  int mode[3];
+  double value[3], ramp[4], alpha;
+  settings_state(mode, value, ramp, alpha);
+  const bool same = std::memcmp(mode, state.mode, sizeof(mode)) == 0 && std::memcmp(value, state.value, sizeof(value)) == 0 &&
+                    std::memcmp(ramp, state.ramp, sizeof(ramp)) == 0 && alpha == state.alpha;
+  if (!same) {
+    if (load_rate_ > 0.0)
+      ramp_done_ = static_cast<double>(crush::LoadRamp(load_rate_, sigma_ref_).steps_to_reach(sigma_start_, target_));
+    return;
+  }
+  ramp_done_ = state.ramp_done;
+  next_report_ = state.next_report;
+  max_step_ = state.max_step;
+  for (int a = 0; a < 3; a++) {
+    last_move_[a] = state.last_move[a];
+    sample_stiffness_[a] = state.sample_stiffness[a];
+    drift_[a] = state.drift[a];
+  }
+}
+
+void FixWallServo::settings_state(int *mode, double *value, double *ramp, double &alpha) const
+{
+  for (int a = 0; a < 3; a++) {
+    mode[a] = static_cast<int>(mode_[a]);
+    value[a] = value_[a];
+  }
+  ramp[0] = sigma_start_;
+  ramp[1] = sigma_max_;
+  ramp[2] = load_rate_;
+  ramp[3] = sigma_ref_;
+  alpha = alpha_;
 }

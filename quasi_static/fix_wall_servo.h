@@ -56,6 +56,7 @@ class FixWallServo : public Fix {
   enum Mode { FIXED, RAMP, STRESS, VELOCITY };
 
   void parse_arguments(const std::vector<std::string> &args);
+  void warn_suspicious();
   std::size_t read_mode(const crush::KeywordTable &t, int axis, const std::vector<std::string> &w, std::size_t at);
   void apply_contacts(double *force, double *stiffness);
   void move_walls(const double *force, const double *force_before, const double *stiffness);
@@ -76,6 +77,8 @@ class FixWallServo : public Fix {
   double area(int axis) const;
   double stress(int axis) const;
   void report_progress();
+  // The settings a restart section must match for the servo's state to carry over.
+  void settings_state(int *mode, double *value, double *ramp, double &alpha) const;
 
   double wall_[6];        // positions (m): xlo xhi ylo yhi zlo zhi
   Mode mode_[3];

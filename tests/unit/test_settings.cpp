@@ -1,6 +1,7 @@
 // fix crush keywords: defaults, values, and errors that name the keyword.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -80,10 +81,10 @@ TEST(CrushSettings, SizeScaledUsesEq10WithN)
 TEST(CrushSettings, ErrorsNameTheKeywordAndTheExpectedValue)
 {
   EXPECT_NE(error_of({"cv", "1"}).find("'sigma_lim0' is required"), std::string::npos);
-  EXPECT_NE(error_of(with({"cv", "-1"})).find("'cv' expects a coefficient of variation >= 0"), std::string::npos);
+  EXPECT_NE(error_of(with({"cv", "-1"})).find("'cv' expects a coefficient of variation in [0, 10]"), std::string::npos);
   EXPECT_NE(error_of(with({"weibull_m", "0"})).find("'weibull_m'"), std::string::npos);
   EXPECT_NE(error_of(with({"d0", "abc"})).find("got 'abc'"), std::string::npos);
-  EXPECT_NE(error_of(with({"scale", "0"})).find("'scale' expects an upscaling factor N > 0"), std::string::npos);
+  EXPECT_NE(error_of(with({"scale", "0"})).find("'scale' expects an upscaling factor N in (0, 1e4]"), std::string::npos);
   EXPECT_NE(error_of(with({"dmin", "-1"})).find("'dmin'"), std::string::npos);
   EXPECT_NE(error_of(with({"every", "1.5"})).find("'every' expects an integer >= 1 or 'adaptive', got '1.5'"),
             std::string::npos);
@@ -100,6 +101,46 @@ TEST(CrushSettings, ErrorsNameTheKeywordAndTheExpectedValue)
   EXPECT_NE(error_of(with({"seed", "-5"})).find("'seed' expects a positive integer"), std::string::npos);
   EXPECT_NE(error_of(with({"speed", "3"})).find("unknown keyword 'speed'"), std::string::npos);
   EXPECT_NE(error_of(with({"log"})).find("'log' expects a file name"), std::string::npos);
+}
+
+// Physical ranges: the edges are accepted, values past them (1e-300, the issue's) are refused by name.
+TEST(CrushSettings, RangesExcludeValuesWithoutPhysicalMeaning)
+{
+  auto with_value = [](const std::string &key, const std::string &value) {
+    std::vector<std::string> args = required;
+    for (std::size_t k = 0; k + 1 < args.size(); k += 2)
+      if (args[k] == key) args[k + 1] = value;
+    if (std::find(args.begin(), args.end(), key) == args.end()) args.insert(args.end(), {key, value});
+    return args;
+  };
+  const struct {
+    const char *key, *low, *high, *below, *above;
+  } edges[] = {{"sigma_lim0", "1e3", "1e30", "1e-300", "1e31"}, {"cv", "0", "10", "-1e-9", "10.5"},
+               {"weibull_m", "0.5", "1000", "1e-300", "1001"}, {"d0", "1e-7", "10", "1e-300", "11"},
+               {"dmin", "0", "10", "-1e-300", "11"}, {"scale", "1e-300", "1e4", "0", "1.0001e4"},
+               {"fines_dimension", "0", "2.999", "-0.1", "3"}};
+  for (const auto &e : edges) {
+    EXPECT_EQ(error_of(with_value(e.key, e.low)), "") << e.key << " " << e.low;
+    EXPECT_EQ(error_of(with_value(e.key, e.high)), "") << e.key << " " << e.high;
+    EXPECT_NE(error_of(with_value(e.key, e.below)).find(std::string("'") + e.key + "' expects"), std::string::npos) << e.key;
+    EXPECT_NE(error_of(with_value(e.key, e.above)).find(std::string("'") + e.key + "' expects"), std::string::npos) << e.key;
+  }
+}
+
+// Legal but unlikely values are named once each; the paper's values raise none.
+TEST(CrushSettings, SuspiciousValuesAreWarnedOf)
+{
+  EXPECT_TRUE(suspicious_settings(parse_crush_settings(with({"scale", "2"}))).empty());
+  const std::vector<std::string> w = suspicious_settings(parse_crush_settings(
+      {"sigma_lim0", "5e3", "cv", "3", "weibull_m", "0.7", "d0", "2e-3", "seed", "1", "scale", "0.5",
+       "fines_dimension", "1", "rayleigh_fraction", "0.9"}));
+  ASSERT_EQ(w.size(), 6u);
+  EXPECT_NE(w[0].find("sigma_lim0 5000 Pa is below 100 kPa"), std::string::npos) << w[0];
+  EXPECT_NE(w[1].find("cv above 2"), std::string::npos);
+  EXPECT_NE(w[2].find("weibull_m outside [1, 50]"), std::string::npos);
+  EXPECT_NE(w[3].find("scale below 1"), std::string::npos);
+  EXPECT_NE(w[4].find("fines_dimension below 2"), std::string::npos);
+  EXPECT_NE(w[5].find("rayleigh_fraction above 0.5"), std::string::npos);
 }
 
 // Every numeric keyword rejects what strtod alone would take: inf, nan, overflow, trailing text.

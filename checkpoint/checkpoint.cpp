@@ -1,0 +1,223 @@
+/* ----------------------------------------------------------------------
+   liggghts-crush: checkpoint (see checkpoint.h).
+------------------------------------------------------------------------- */
+#include "checkpoint.h"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <algorithm>
+#include <fstream>
+#include <sstream>
+
+#include "comm.h"
+#include "crush_csv_rows.h"
+#include "crush_model_error.h"
+#include "error.h"
+#include "input.h"
+#include "read_restart.h"
+#include "update.h"
+#include "variable.h"
+#include "write_restart.h"
+
+using namespace LAMMPS_NS;
+
+namespace {
+
+long long file_size(const std::string &file)
+{
+  struct stat st;
+  return stat(file.c_str(), &st) == 0 ? static_cast<long long>(st.st_size) : -1;
+}
+
+bool read_text(const std::string &file, std::string &text)
+{
+  std::ifstream in(file, std::ios::binary);
+  if (!in) return false;
+  std::ostringstream all;
+  all << in.rdbuf();
+  text = all.str();
+  return true;
+}
+
+// Written under FILE.tmp, flushed to the disk, then renamed: FILE is always complete or absent.
+bool write_text_atomically(const std::string &file, const std::string &text)
+{
+  const std::string tmp = file + ".tmp";
+  FILE *fp = fopen(tmp.c_str(), "w");
+  if (!fp) return false;
+  const bool ok = fwrite(text.data(), 1, text.size(), fp) == text.size() && fflush(fp) == 0 &&
+                  fsync(fileno(fp)) == 0;
+  return fclose(fp) == 0 && ok && rename(tmp.c_str(), file.c_str()) == 0;
+}
+
+bool sync_file(const std::string &file)
+{
+  const int fd = open(file.c_str(), O_RDONLY);
+  if (fd < 0) return false;
+  const bool ok = fsync(fd) == 0;
+  return close(fd) == 0 && ok;
+}
+
+void broadcast(std::string &text, MPI_Comm world)
+{
+  int n = static_cast<int>(text.size());
+  MPI_Bcast(&n, 1, MPI_INT, 0, world);
+  text.resize(n);
+  if (n > 0) MPI_Bcast(&text[0], n, MPI_CHAR, 0, world);
+}
+
+}  // namespace
+
+Checkpoint::Checkpoint(LAMMPS *lmp) : Pointers(lmp) {}
+
+void Checkpoint::command(int narg, char **arg)
+{
+  const std::vector<std::string> args(arg, arg + narg);
+  if (args.size() < 2) fail("expected 'checkpoint write|find|read BASE ...'");
+  const std::string &base = args[1];
+  if (base.find_first_of("*%") != std::string::npos)
+    fail("BASE '" + base + "' may not contain '*' or '%' (it names two files of its own)");
+  if (args[0] == "write") {
+    if (args.size() > 2 && args[2] != "variables") fail("write: unknown keyword '" + args[2] + "' (expected 'variables')");
+    write(base, std::vector<std::string>(args.begin() + std::min<std::size_t>(3, args.size()), args.end()));
+  } else if (args[0] == "find") {
+    if (args.size() != 3) fail("expected 'checkpoint find BASE VAR'");
+    find(base, args[2]);
+  } else if (args[0] == "read") {
+    if (args.size() > 2 && args[2] != "trim") fail("read: unknown keyword '" + args[2] + "' (expected 'trim')");
+    read(base, std::vector<std::string>(args.begin() + std::min<std::size_t>(3, args.size()), args.end()));
+  } else {
+    fail("unknown action '" + args[0] + "' (expected write, find or read)");
+  }
+}
+
+void Checkpoint::fail(const std::string &what)
+{
+  error->all(FLERR, ("checkpoint: " + what).c_str());
+}
+
+std::vector<crush::CheckpointEntry> Checkpoint::entries(const std::string &base, int &newest)
+{
+  std::string text;
+  int present = 0;
+  if (comm->me == 0) present = read_text(crush::checkpoint_marker(base), text) ? 1 : 0;
+  MPI_Bcast(&present, 1, MPI_INT, 0, world);
+  newest = -1;
+  if (!present) return {};
+  broadcast(text, world);
+  std::vector<crush::CheckpointEntry> list;
+  try {
+    list = crush::parse_marker(text);
+  } catch (const crush::ModelError &e) {
+    fail("the marker " + crush::checkpoint_marker(base) + " is not a checkpoint marker: " + e.what());
+  }
+  if (comm->me == 0) newest = crush::newest_complete(list, file_size);
+  MPI_Bcast(&newest, 1, MPI_INT, 0, world);
+  return list;
+}
+
+void Checkpoint::write(const std::string &base, const std::vector<std::string> &variables)
+{
+  int newest = -1;
+  const std::vector<crush::CheckpointEntry> list = entries(base, newest);
+  crush::CheckpointEntry entry;
+  entry.step = static_cast<long long>(update->ntimestep);
+  entry.file = crush::checkpoint_file(base, crush::next_slot(base, list));
+  for (const std::string &name : variables) {
+    const int ivar = input->variable->find(const_cast<char *>(name.c_str()));
+    if (ivar < 0 || !input->variable->equalstyle(ivar))
+      fail("write: 'variables " + name + "': no equal-style variable of that name");
+    char value[64];
+    snprintf(value, sizeof(value), "%.17g", input->variable->compute_equal(ivar));
+    entry.variables.emplace_back(name, value);
+  }
+  const double start = MPI_Wtime();
+  const std::string tmp = entry.file + ".tmp";
+  WriteRestart writer(lmp);
+  char *wargs[1] = {const_cast<char *>(tmp.c_str())};
+  writer.command(1, wargs);
+  int ok = 1;
+  if (comm->me == 0) {
+    entry.bytes = file_size(tmp);
+    ok = entry.bytes > 0 && sync_file(tmp) && rename(tmp.c_str(), entry.file.c_str()) == 0 &&
+         write_text_atomically(crush::checkpoint_marker(base), crush::format_marker(crush::after_write(base, list, entry)));
+  }
+  MPI_Bcast(&ok, 1, MPI_INT, 0, world);
+  if (!ok) fail("write: could not write " + entry.file + " or " + crush::checkpoint_marker(base) + " (disk full? permissions?)");
+  if (comm->me == 0) {
+    char line[512];
+    snprintf(line, sizeof(line), "CHECKPOINT step %lld: %s (%.1f MB, %.2f s)\n", entry.step, entry.file.c_str(),
+             entry.bytes / 1e6, MPI_Wtime() - start);
+    if (screen) fputs(line, screen);
+    if (logfile) fputs(line, logfile);
+  }
+}
+
+void Checkpoint::find(const std::string &base, const std::string &var)
+{
+  int newest = -1;
+  const std::vector<crush::CheckpointEntry> list = entries(base, newest);
+  set_variable(var, "string", newest < 0 ? "-1" : std::to_string(list[newest].step));
+}
+
+void Checkpoint::read(const std::string &base, const std::vector<std::string> &trim)
+{
+  int newest = -1;
+  const std::vector<crush::CheckpointEntry> list = entries(base, newest);
+  if (newest < 0)
+    fail("read: no complete checkpoint " + crush::checkpoint_file(base, 1) + " or " + crush::checkpoint_file(base, 2) +
+         (list.empty() ? " (no marker " + crush::checkpoint_marker(base) + ")" : " of the sizes its marker records") +
+         ": nothing to resume; run without resuming");
+  const crush::CheckpointEntry &entry = list[newest];
+  if (newest + 1 < static_cast<int>(list.size()) && comm->me == 0) {
+    const std::string msg = "checkpoint: the newest checkpoint " + list.back().file +
+                            " is incomplete; resuming from the one before, " + entry.file;
+    error->warning(FLERR, msg.c_str());
+  }
+  ReadRestart reader(lmp);
+  char *rargs[1] = {const_cast<char *>(entry.file.c_str())};
+  reader.command(1, rargs);
+  if (static_cast<long long>(update->ntimestep) != entry.step)
+    fail("read: " + entry.file + " holds step " + std::to_string(update->ntimestep) + ", its marker says " +
+         std::to_string(entry.step));
+  for (const auto &v : entry.variables) set_variable(v.first, "equal", v.second);
+  for (const std::string &file : trim) trim_file(file, entry.step);
+  if (comm->me == 0) {
+    const std::string line = "CHECKPOINT resumed from " + entry.file + " at step " + std::to_string(entry.step) + "\n";
+    if (screen) fputs(line.c_str(), screen);
+    if (logfile) fputs(line.c_str(), logfile);
+  }
+}
+
+// Rows after the checkpoint's step go (the killed run wrote them after it); a file not there yet
+// stays absent (the resumed deck creates it).
+void Checkpoint::trim_file(const std::string &file, long long step)
+{
+  int ok = 1;
+  std::string line;
+  if (comm->me == 0) {
+    std::string text;
+    if (read_text(file, text)) {
+      int dropped = 0;
+      const std::string kept = crush::trim_rows(text, step, false, dropped);
+      ok = write_text_atomically(file, kept);
+      line = "CHECKPOINT " + file + ": " + std::to_string(dropped) + " rows after step " + std::to_string(step) +
+             " dropped\n";
+    }
+  }
+  MPI_Bcast(&ok, 1, MPI_INT, 0, world);
+  if (!ok) fail("read: could not rewrite 'trim " + file + "'");
+  if (comm->me == 0 && !line.empty()) {
+    if (screen) fputs(line.c_str(), screen);
+    if (logfile) fputs(line.c_str(), logfile);
+  }
+}
+
+void Checkpoint::set_variable(const std::string &name, const char *style, const std::string &value)
+{
+  char *vargs[3] = {const_cast<char *>(name.c_str()), const_cast<char *>(style), const_cast<char *>(value.c_str())};
+  input->variable->set(3, vargs);
+}
