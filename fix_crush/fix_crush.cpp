@@ -210,26 +210,38 @@ bool FixCrush::breakable(int i) const
   return (atom->mask[i] & groupbit) && 2.0 * atom->radius[i] >= settings_.dmin;
 }
 
-// A particle of the group without a positive, finite size or density has no strength (eq. 10) and no
-// fragments: the run stops naming the first such particle, before any of it is drawn.
+// Before the run's first exchange: a particle of the group without a positive, finite size or density
+// has no strength (eq. 10) and no fragments; a particle outside a fixed box would be dropped by that
+// exchange without a word (LIGGGHTS then recounts its particles). The run stops naming the first.
 void FixCrush::check_particles() const
 {
+  auto outside = [this](const double *x) {
+    for (int d = 0; d < 3; d++)
+      if (!domain->periodicity[d] && !(x[d] >= domain->boxlo[d] && x[d] <= domain->boxhi[d])) return true;
+    return false;
+  };
   int first = std::numeric_limits<int>::max();
   for (int i = 0; i < atom->nlocal; i++) {
-    if (!(atom->mask[i] & groupbit)) continue;
     const double r = atom->radius[i], rho = atom->density[i];
-    if (!(r > 0.0 && std::isfinite(r) && rho > 0.0 && std::isfinite(rho))) first = std::min(first, static_cast<int>(atom->tag[i]));
+    const bool bad_data = (atom->mask[i] & groupbit) && !(r > 0.0 && std::isfinite(r) && rho > 0.0 && std::isfinite(rho));
+    if (bad_data || outside(atom->x[i])) first = std::min(first, static_cast<int>(atom->tag[i]));
   }
   int first_all = 0;
   MPI_Allreduce(&first, &first_all, 1, MPI_INT, MPI_MIN, world);
   if (first_all == std::numeric_limits<int>::max()) return;
-  char msg[512] = "";
   const int i = atom->map(first_all);
-  if (i >= 0 && i < atom->nlocal)
-    snprintf(msg, sizeof(msg), "Fix crush (id %s): particle %d has radius %g m and density %g kg/m^3: both must be "
-             "finite and > 0 (set ... diameter, density; create_atoms; read_data)", id, first_all, atom->radius[i],
-             atom->density[i]);
-  if (msg[0]) error->one(FLERR, msg);
+  if (i >= 0 && i < atom->nlocal) {
+    char msg[512];
+    const double *x = atom->x[i];
+    if (outside(x))
+      snprintf(msg, sizeof(msg), "Fix crush (id %s): particle %d lies outside the simulation box, at (%g %g %g): "
+               "LIGGGHTS would drop it silently; keep the particles inside the box", id, first_all, x[0], x[1], x[2]);
+    else
+      snprintf(msg, sizeof(msg), "Fix crush (id %s): particle %d has radius %g m and density %g kg/m^3: both must "
+               "be finite and > 0 (set ... diameter, density; create_atoms; read_data)", id, first_all,
+               atom->radius[i], atom->density[i]);
+    error->one(FLERR, msg);
+  }
   MPI_Barrier(world);  // the owner stops the run
 }
 

@@ -7,7 +7,7 @@ namespace crush {
 
 static void check_material(const Material &m)
 {
-  require(m.youngs_modulus > 0.0, "youngs_modulus", m.youngs_modulus, "> 0 Pa");
+  require(m.youngs_modulus > 0.0 && m.youngs_modulus <= 3e13, "youngs_modulus", m.youngs_modulus, "in (0, 3e13] Pa");
   require(m.poisson_ratio > -1.0 && m.poisson_ratio < 0.5, "poisson_ratio", m.poisson_ratio,
           "in (-1, 0.5)");
 }

@@ -10,7 +10,8 @@ namespace crush {
 
 static void check_material(const ShearMaterial &m)
 {
-  require(m.shear_modulus > 0.0, "shear modulus G", m.shear_modulus, "> 0 Pa");
+  // above 1e13 Pa no solid (diamond: G = 5e11 Pa): the forces would overflow before anything moved
+  require(m.shear_modulus > 0.0 && m.shear_modulus <= 1e13, "shear modulus G", m.shear_modulus, "in (0, 1e13] Pa");
   require(m.poisson_ratio > -1.0 && m.poisson_ratio < 0.5, "poisson_ratio", m.poisson_ratio,
           "in (-1, 0.5)");
 }

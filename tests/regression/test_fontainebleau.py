@@ -249,7 +249,7 @@ def case_time_step_sequence(liggghts, work):
         ("thermo_style    custom step atoms f_crush[1] f_walls[10] f_walls[9] v_K0 v_n c_gsd[12] cpu",
          "thermo_style    custom step atoms dt f_crush[1] f_walls[10] f_walls[9] v_K0 v_n c_gsd[12]"),
         ("thermo          100000", "thermo          1\nthermo_modify   format float %.17g")],
-        includes=["in.load_controlled"])
+        includes=["in.load_controlled", "in.load_stage"])
     run_deck(liggghts, deck, os.path.join(work, "run"), {"sigma_max": 2e6})
     rows, header = [], None
     for line in open(os.path.join(work, "run", "log.liggghts")):

@@ -85,8 +85,10 @@ TEST(BreakageLimit, InvalidInputNamesTheParameter)
     FAIL() << "no exception";
   } catch (const ModelError &e) {
     EXPECT_NE(std::string(e.what()).find("youngs_modulus"), std::string::npos);
-    EXPECT_NE(std::string(e.what()).find("> 0 Pa"), std::string::npos);
+    EXPECT_NE(std::string(e.what()).find("in (0, 3e13] Pa"), std::string::npos);
   }
+  EXPECT_THROW(effective_modulus({1e300, 0.3}, quartz), ModelError);  // beyond any solid: overflows
+  EXPECT_NO_THROW(effective_modulus({3e13, 0.3}, quartz));
   EXPECT_THROW(effective_modulus({1e9, 0.5}, quartz), ModelError);
   EXPECT_THROW(size_scaled_strength(5e9, 1e-4, 2e-3, 0.0, 1.0), ModelError);
   EXPECT_THROW(size_scaled_strength(5e9, 1e-4, 2e-3, 10.0, 0.0), ModelError);
