@@ -88,7 +88,9 @@ void Checkpoint::command(int narg, char **arg)
     find(base, args[2]);
   } else if (args[0] == "read") {
     if (args.size() > 2 && args[2] != "trim") fail("read: unknown keyword '" + args[2] + "' (expected 'trim')");
-    read(base, std::vector<std::string>(args.begin() + std::min<std::size_t>(3, args.size()), args.end()));
+    const std::vector<std::string> trim(args.begin() + std::min<std::size_t>(3, args.size()), args.end());
+    if (trim.size() % 2 != 0) fail("read: 'trim' expects pairs 'file title' (the title: the file's first line)");
+    read(base, trim);
   } else {
     fail("unknown action '" + args[0] + "' (expected write, find or read)");
   }
@@ -184,7 +186,7 @@ void Checkpoint::read(const std::string &base, const std::vector<std::string> &t
     fail("read: " + entry.file + " holds step " + std::to_string(update->ntimestep) + ", its marker says " +
          std::to_string(entry.step));
   for (const auto &v : entry.variables) set_variable(v.first, "equal", v.second);
-  for (const std::string &file : trim) trim_file(file, entry.step);
+  for (std::size_t k = 0; k + 1 < trim.size(); k += 2) trim_file(trim[k], trim[k + 1], entry.step);
   if (comm->me == 0) {
     const std::string line = "CHECKPOINT resumed from " + entry.file + " at step " + std::to_string(entry.step) + "\n";
     if (screen) fputs(line.c_str(), screen);
@@ -192,25 +194,25 @@ void Checkpoint::read(const std::string &base, const std::vector<std::string> &t
   }
 }
 
-// Rows after the checkpoint's step go (the killed run wrote them after it); a file not there yet
-// stays absent (the resumed deck creates it).
-void Checkpoint::trim_file(const std::string &file, long long step)
+// Rows after the checkpoint's step go (the killed run wrote them after it). A file left without its
+// title (killed before its first row reached the disk) gets it back, so the resumed run appends.
+void Checkpoint::trim_file(const std::string &file, const std::string &title, long long step)
 {
   int ok = 1;
   std::string line;
   if (comm->me == 0) {
     std::string text;
-    if (read_text(file, text)) {
-      int dropped = 0;
-      const std::string kept = crush::trim_rows(text, step, false, dropped);
-      ok = write_text_atomically(file, kept);
-      line = "CHECKPOINT " + file + ": " + std::to_string(dropped) + " rows after step " + std::to_string(step) +
-             " dropped\n";
-    }
+    read_text(file, text);
+    int dropped = 0;
+    std::string kept = crush::trim_rows(text, step, false, dropped);
+    if (kept.compare(0, title.size() + 1, title + "\n") != 0) kept = title + "\n" + kept;
+    ok = write_text_atomically(file, kept);
+    line = "CHECKPOINT " + file + ": " + std::to_string(dropped) + " rows after step " + std::to_string(step) +
+           " dropped\n";
   }
   MPI_Bcast(&ok, 1, MPI_INT, 0, world);
   if (!ok) fail("read: could not rewrite 'trim " + file + "'");
-  if (comm->me == 0 && !line.empty()) {
+  if (comm->me == 0) {
     if (screen) fputs(line.c_str(), screen);
     if (logfile) fputs(line.c_str(), logfile);
   }

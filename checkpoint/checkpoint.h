@@ -6,9 +6,10 @@
      renamed when complete, then the marker BASE.last (step, size, the named equal-style variables)
    checkpoint find BASE VAR
      sets the string variable VAR to the step of the newest complete checkpoint, or -1 if none
-   checkpoint read BASE [trim FILE ...]
+   checkpoint read BASE [trim FILE TITLE ...]
      read_restart of the newest complete checkpoint, then the saved variables (equal style); each
-     FILE (a CSV whose rows start with their step) loses the rows of steps after the checkpoint's
+     FILE (a CSV whose rows start with their step, TITLE its first line) loses the rows of steps
+     after the checkpoint's
    Between two checkpoints a deck runs 'run N pre yes', so that the uninterrupted run and the resumed
    one start each stretch from the same full setup (doc/design.md, "Checkpoints").
 ------------------------------------------------------------------------- */
@@ -40,7 +41,7 @@ class Checkpoint : protected Pointers {
   void read(const std::string &base, const std::vector<std::string> &trim);
   // The marker's entries and the newest complete one (-1: none), the same on every proc.
   std::vector<crush::CheckpointEntry> entries(const std::string &base, int &newest);
-  void trim_file(const std::string &file, long long step);
+  void trim_file(const std::string &file, const std::string &title, long long step);
   void set_variable(const std::string &name, const char *style, const std::string &value);
   void fail(const std::string &what);  // error->all, naming the command
 };
