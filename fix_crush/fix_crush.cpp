@@ -674,8 +674,13 @@ void FixCrush::check_time_step(double smallest_radius) const
   for (int t = 1; t <= atom->ntypes; t++) {
     if (!present_all[t]) continue;
     const crush::ShearMaterial m = type_shear_material(modify, atom->ntypes, t, style);
-    dt_limit = std::min(dt_limit, settings_.rayleigh_fraction *
-                                      crush::rayleigh_time_step(smallest_radius, density_all, m));
+    try {
+      dt_limit = std::min(dt_limit, settings_.rayleigh_fraction *
+                                        crush::rayleigh_time_step(smallest_radius, density_all, m));
+    } catch (const crush::ModelError &e) {
+      error->all(FLERR, (std::string("fix crush: the Rayleigh time-step check: ") + e.what() +
+                         " (the smallest radius and density of the particles present)").c_str());
+    }
   }
   if (update->dt > dt_limit) {
     char msg[512];

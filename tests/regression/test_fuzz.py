@@ -18,6 +18,11 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from liggghts_run import check, each_rank_count, variants  # noqa: E402
 from liggghts_run import main as test_main  # noqa: E402
 
+MATERIALS = """fix             m1 all property/global youngsModulus peratomtype 7.8e9 7.8e9
+fix             m2 all property/global poissonsRatio peratomtype 0.3 0.3
+fix             m3 all property/global coefficientRestitution peratomtypepair 2 0.9 0.9 0.9 0.9
+fix             m4 all property/global coefficientFriction peratomtypepair 2 0.3 0.3 0.3 0.3
+"""
 BASE = """atom_style      granular
 atom_modify     map array
 boundary        f f f
@@ -29,10 +34,7 @@ region          box block 0 0.004 0 0.004 0 0.004 units box
 create_box      2 box
 neighbor        0.0001 bin
 neigh_modify    delay 0
-fix             m1 all property/global youngsModulus peratomtype 7.8e9 7.8e9
-fix             m2 all property/global poissonsRatio peratomtype 0.3 0.3
-fix             m3 all property/global coefficientRestitution peratomtypepair 2 0.9 0.9 0.9 0.9
-fix             m4 all property/global coefficientFriction peratomtypepair 2 0.3 0.3 0.3 0.3
+MATERIALS
 ATOMS
 set             group all diameter 0.00155 density 2650
 pair_style      gran model hertz/scaled tangential mindlin/scaled
@@ -71,7 +73,7 @@ READ_DATA = "read_data       grains.data"
 
 
 def deck(*edits, atoms=LATTICE):
-    text = BASE.replace("ATOMS", atoms)
+    text = BASE.replace("MATERIALS\n", MATERIALS).replace("ATOMS", atoms)
     for old, new in edits:
         if old not in text:
             raise AssertionError("fuzz setup: '%s' not in the base deck" % old)
@@ -113,14 +115,11 @@ hard_particles  yes
 communicate     single vel yes
 neighbor        0.0001 bin
 neigh_modify    delay 0
-fix             m1 all property/global youngsModulus peratomtype 7.8e9 7.8e9
-fix             m2 all property/global poissonsRatio peratomtype 0.3 0.3
-fix             m3 all property/global coefficientRestitution peratomtypepair 2 0.9 0.9 0.9 0.9
-fix             m4 all property/global coefficientFriction peratomtypepair 2 0.3 0.3 0.3 0.3
+MATERIALS
 pair_coeff      * *
 fix             integr all nve/sphere
 run             10
-"""
+""".replace("MATERIALS\n", MATERIALS)
 
 
 def restart_deck(content):
@@ -129,15 +128,20 @@ def restart_deck(content):
     return RESTART_DECK, content
 
 
-SIZES = [("diameter_zero", deck(("diameter 0.00155", "diameter 0"))),
-         ("diameter_negative", deck(("diameter 0.00155", "diameter -1e-3"))),
-         ("diameter_huge", deck(("diameter 0.00155", "diameter 1e3"))),
-         ("diameter_nan", deck(("diameter 0.00155", "diameter nan"))),
-         ("diameter_inf", deck(("diameter 0.00155", "diameter inf"))),
-         ("density_zero", deck(("density 2650", "density 0"))),
-         ("density_negative", deck(("density 2650", "density -2650"))),
-         ("density_nan", deck(("density 2650", "density nan"))),
-         ("density_huge", deck(("density 2650", "density 1e300")))]
+def replacing(old, **cases):
+    """One deck per case: BASE with `old` replaced by the case's text."""
+    return [(name, deck((old, new))) for name, new in cases.items()]
+
+
+SIZES = replacing("diameter 0.00155", diameter_zero="diameter 0", diameter_negative="diameter -1e-3",
+                  diameter_huge="diameter 1e3", diameter_nan="diameter nan", diameter_inf="diameter inf") + \
+    replacing("density 2650", density_zero="density 0", density_negative="density -2650", density_nan="density nan",
+              density_huge="density 1e300") + [
+         ("density_zero_outside_group", deck(("set             group all diameter 0.00155 density 2650",
+                                              "set             group all diameter 0.00155 density 2650\n"
+                                              "set             atom 8 density 0\ngroup           grains id 1:7"),
+                                             ("crush all crush", "crush grains crush"),
+                                             ("fix             dtfix all dt/stiffness fraction 0.5\n", "")))]
 MODULI = [("youngs_zero", deck(material("E", "0"))),
           ("youngs_negative", deck(material("E", "-7.8e9"))),
           ("youngs_nan", deck(material("E", "nan"))),
@@ -175,16 +179,13 @@ MISSING = [("no_youngs", deck(("fix             m1 all property/global youngsMod
            ("no_friction", deck(("fix             m4 all property/global coefficientFriction peratomtypepair 2 0.3 0.3 0.3 0.3\n", ""))),
            ("no_pair_coeff", deck(("pair_coeff      * *\n", ""))),
            ("one_type_material", deck(("youngsModulus peratomtype 7.8e9 7.8e9", "youngsModulus peratomtype 7.8e9")))]
-QUASI_STATIC = [("damp_edge", deck(("damp/local alpha 0.05", "damp/local alpha 0.999"))),
-                ("damp_one", deck(("damp/local alpha 0.05", "damp/local alpha 1"))),
-                ("servo_stress_edge", deck(("z ramp ramp 1e5 1e7 0.1", "z stress 1e12"))),
-                ("servo_stress_zero", deck(("z ramp ramp 1e5 1e7 0.1", "z stress 0"))),
-                ("servo_rate_edge", deck(("ramp 1e5 1e7 0.1", "ramp 1e5 1e7 100"))),
-                ("servo_walls_crossed", deck(("wall/servo 0 0.004", "wall/servo 0.004 0"))),
-                ("servo_velocity_huge", deck(("z ramp ramp 1e5 1e7 0.1", "z velocity -1e4"))),
-                ("dt_fraction_edge", deck(("dt/stiffness fraction 0.5", "dt/stiffness fraction 1"))),
-                ("dt_fraction_zero", deck(("dt/stiffness fraction 0.5", "dt/stiffness fraction 0"))),
-                ("dt_growth_edge", deck(("dt/stiffness fraction 0.5", "dt/stiffness fraction 0.5 growth 10")))]
+QUASI_STATIC = replacing("damp/local alpha 0.05", damp_edge="damp/local alpha 0.999", damp_one="damp/local alpha 1") + \
+    replacing("z ramp ramp 1e5 1e7 0.1", servo_stress_edge="z stress 1e12", servo_stress_zero="z stress 0",
+              servo_velocity_huge="z velocity -1e4") + \
+    replacing("ramp 1e5 1e7 0.1", servo_rate_edge="ramp 1e5 1e7 100") + \
+    replacing("wall/servo 0 0.004", servo_walls_crossed="wall/servo 0.004 0") + \
+    replacing("dt/stiffness fraction 0.5", dt_fraction_edge="dt/stiffness fraction 1",
+              dt_fraction_zero="dt/stiffness fraction 0", dt_growth_edge="dt/stiffness fraction 0.5 growth 10")
 DATA_FILES = [("data_good", data_deck(DATA)),
               ("data_truncated", data_deck(DATA[:DATA.index("2 1 0.00155")])),
               ("data_not_a_number", data_deck(DATA.replace("2 1 0.00155 2650", "2 1 abc 2650"))),
@@ -285,7 +286,7 @@ MUST_RUN = {"strength_low_edge", "strength_high_edge", "weibull_low_edge", "d0_e
             "dmin_edge", "dmin_zero", "fines_edge", "damp_edge", "servo_stress_edge", "servo_rate_edge",
             "dt_fraction_edge", "dt_growth_edge", "data_good", "restart_good", "density_huge"}
 MUST_STOP = {"diameter_zero", "diameter_negative", "diameter_nan", "diameter_inf", "density_zero",
-             "density_negative", "density_nan", "youngs_zero", "youngs_negative", "youngs_nan", "strength_zero",
+             "density_negative", "density_nan", "density_zero_outside_group", "youngs_zero", "youngs_negative", "youngs_nan", "strength_zero",
              "strength_negative", "strength_nan", "strength_inf", "strength_tiny", "weibull_tiny", "d0_tiny",
              "cv_nan", "coincident", "outside_box", "no_atoms", "poisson_minus_one", "youngs_huge", "timestep_huge", "timestep_nan", "no_youngs", "no_poisson",
              "no_friction", "no_pair_coeff", "one_type_material", "damp_one", "servo_stress_zero",
