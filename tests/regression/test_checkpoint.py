@@ -128,14 +128,14 @@ def pending_interval(reference):
     return offsets[0]
 
 
-def resume_and_compare(liggghts, name, folder, reference, newest, variables):
+def resume_and_compare(liggghts, name, folder, reference, newest, variables, outputs=OUTPUTS):
     events_before = event_steps(folder)
     out = run(liggghts, folder, 1, dict(variables, resume=1))
     check("CHECKPOINT resumed from" in out and "at step %d" % newest in out,
           "%s: resumed from the checkpoint of step %d" % (name, newest))
     later = [s for s in events_before if s >= newest]
     print("%s: the killed run had logged %d events at or after step %d" % (name, len(later), newest))
-    for output in OUTPUTS:
+    for output in outputs:
         a = open(os.path.join(reference, output)).read()
         b = open(os.path.join(folder, output)).read()
         check(a == b, "%s: %s identical to the uninterrupted run's (%d lines)" % (name, output, a.count("\n")))
@@ -173,6 +173,24 @@ def case_resume_exact(liggghts, work):
         print("attempt %d: the run had passed the next checkpoint (%d) when killed" % (attempt + 1, newest))
     check(newest == step, "killed with the checkpoint of step %d, events pending, the newest" % step)
     resume_and_compare(liggghts, "pending", folder, reference, newest, pending)
+
+
+@variants(timeout=1800, label="slow")
+def case_resume_full(liggghts, work):
+    """The decks as a user runs them: `liggghts -in in.oedometer` (O-2 to 100 MPa, the sample
+    prepared in the run, a checkpoint every 20000 steps), killed a few seconds after its first
+    checkpoint and resumed with -var resume 1 in the same folder: the history, the events and the
+    particles and grading at 100 MPa are those of the uninterrupted run, to the last digit."""
+    variables = {"vtk": 0}
+    outputs = ("history_O2.csv", "events_O2.csv", "dump_O2_100MPa.liggghts", "gsd_O2_100MPa.csv")
+    reference = copy_sample(DECKS, os.path.join(work, "uninterrupted"))
+    start = time.time()
+    out = run(liggghts, reference, 1, variables)
+    check("CHECKPOINT step" in out, "the uninterrupted run wrote checkpoints (%.0f s)" % (time.time() - start))
+    folder = copy_sample(DECKS, os.path.join(work, "killed"))
+    step = first_step(reference) + 20000
+    newest = kill_after(liggghts, folder, 1, variables, step, 3.0)
+    resume_and_compare(liggghts, "full", folder, reference, newest, variables, outputs)
 
 
 @variants(timeout=600)
