@@ -19,7 +19,7 @@ set(_doc "${CMAKE_INSTALL_DATADIR}/doc/liggghts-crush")
 install(PROGRAMS "$<TARGET_FILE:liggghts>" DESTINATION "${CMAKE_INSTALL_BINDIR}" RENAME liggghts-crush
         COMPONENT runtime)
 install(DIRECTORY "${PROJECT_SOURCE_DIR}/examples/" DESTINATION "${_share}/examples" COMPONENT runtime
-        FILES_MATCHING PATTERN "in.*")
+        FILES_MATCHING PATTERN "in.*" PATTERN "*.py")
 install(PROGRAMS "${PROJECT_SOURCE_DIR}/post/plot.py" "${PROJECT_SOURCE_DIR}/post/summary.py"
         DESTINATION "${_share}/post" COMPONENT runtime)
 install(FILES "${PROJECT_SOURCE_DIR}/post/paper.py" DESTINATION "${_share}/post" COMPONENT runtime)

@@ -72,6 +72,9 @@ class FixCrush : public Fix {
   bool decide_check(bool renumbered);
   void find_moving_walls();
   class Fix *wall(std::size_t k) const;
+  class AbstractMesh *mesh(std::size_t k) const;
+  std::vector<double> mesh_nodes(std::size_t k) const;
+  double largest_mesh_displacement() const;
   void update_ratio_growth();
   void store_check_reference();
   double largest_displacement() const;
@@ -113,6 +116,8 @@ class FixCrush : public Fix {
   std::vector<double> reference_x_;        // per local atom: its position at the last check
   std::vector<double> wall_reference_;     // the fix wall/servo walls' positions at the last check
   std::vector<std::string> wall_ids_;      // the fix wall/servo instances, found by ID at each use
+  std::vector<std::string> mesh_ids_;      // the fix mesh/surface instances, likewise
+  std::vector<std::vector<double>> mesh_reference_;  // their nodes by element ID at the last check
   double box_reference_[3];
   double allowed_displacement_;            // D below which no grain can reach its limit
   bool force_check_;                       // check the next step (run start)

@@ -1,9 +1,10 @@
 /* ----------------------------------------------------------------------
    liggghts-crush: fix crush's exact adaptive check ('every adaptive'): the steps on which no grain
    can reach its limit, proved by the bound of crush_check_bound.h, are neither recorded nor checked.
-   At each check the fix stores every particle's position (and the walls' and the periodic box's) and
-   the smallest displacement that could bring a grain to its limit; on each later step it measures
-   the largest displacement since the check, and checks again once that reaches the allowance.
+   At each check the fix stores every particle's position (and the walls', the mesh nodes' and the
+   periodic box's) and the smallest displacement that could bring a grain to its limit; on each later
+   step it measures the largest displacement since the check, and checks again once that reaches the
+   allowance.
 ------------------------------------------------------------------------- */
 #include "fix_crush.h"
 
@@ -14,8 +15,10 @@
 
 #include "atom.h"
 #include "crush_check_bound.h"
+#include "abstract_mesh.h"
 #include "domain.h"
 #include "error.h"
+#include "fix_mesh.h"
 #include "fix_property_atom.h"
 #include "modify.h"
 
@@ -25,18 +28,42 @@ namespace {
 const int nwall_positions = 6;  // fix wall/servo: f_walls[1..6], the wall positions
 }  // namespace
 
-// The walls whose motion the bound covers: fix wall/servo's, whose positions it publishes. A mesh
-// moved by fix move/mesh is not covered: refuse rather than miss an event.
+// The walls whose motion the bound covers: fix wall/servo's, whose positions it publishes, and every
+// mesh (fix mesh/surface...), whose nodes fix move/mesh may move: a static one adds nothing.
 void FixCrush::find_moving_walls()
 {
   wall_ids_.clear();
+  mesh_ids_.clear();
   for (int k = 0; k < modify->nfix; k++) {
     const char *style = modify->fix[k]->style;
     if (strcmp(style, "wall/servo") == 0) wall_ids_.push_back(modify->fix[k]->id);
-    else if (strncmp(style, "move/mesh", 9) == 0)
-      error->fix_error(FLERR, this, "keyword 'every adaptive' bounds the motion of fix wall/servo walls only, "
-                                    "and fix move/mesh moves a mesh: use 'every 1' (or 'every N')");
+    else if (strncmp(style, "mesh/surface", 12) == 0) mesh_ids_.push_back(modify->fix[k]->id);
   }
+}
+
+// Mesh k of init(), or NULL once unfixed.
+AbstractMesh *FixCrush::mesh(std::size_t k) const
+{
+  const int ifix = modify->find_fix(mesh_ids_[k].c_str());
+  return ifix < 0 ? NULL : static_cast<FixMesh *>(modify->fix[ifix])->mesh();
+}
+
+// Every node of mesh k by element ID (3 coordinates a node), the same on every processor: each owned
+// element writes its own, one sum gathers them (meshes of a few thousand elements: a tool, a pile).
+std::vector<double> FixCrush::mesh_nodes(std::size_t k) const
+{
+  AbstractMesh *m = mesh(k);
+  if (!m) return std::vector<double>();
+  const int per_element = 3 * m->numNodes();
+  int largest_id = -1, largest_all = -1;
+  for (int i = 0; i < m->sizeLocal(); i++) largest_id = std::max(largest_id, m->id_slow(i));
+  MPI_Allreduce(&largest_id, &largest_all, 1, MPI_INT, MPI_MAX, world);
+  std::vector<double> local(static_cast<std::size_t>(largest_all + 1) * per_element, 0.0), all(local.size(), 0.0);
+  for (int i = 0; i < m->sizeLocal(); i++)
+    for (int j = 0; j < m->numNodes(); j++)
+      m->node_slow(i, j, &local[static_cast<std::size_t>(m->id_slow(i)) * per_element + 3 * j]);
+  MPI_Allreduce(local.data(), all.data(), static_cast<int>(local.size()), MPI_DOUBLE, MPI_SUM, world);
+  return all;
 }
 
 // Wall k of init(), or NULL once unfixed: by ID, since 'run ... pre no' after an unfix skips init().
@@ -75,6 +102,30 @@ void FixCrush::store_check_reference()
     if (Fix *f = wall(w))
       for (int k = 0; k < nwall_positions; k++) wall_reference_[nwall_positions * w + k] = f->compute_vector(k);
   for (int k = 0; k < 3; k++) box_reference_[k] = domain->prd[k];
+  mesh_reference_.assign(mesh_ids_.size(), std::vector<double>());
+  for (std::size_t k = 0; k < mesh_ids_.size(); k++) mesh_reference_[k] = mesh_nodes(k);
+}
+
+// The largest displacement of an owned element's nodes since the check (this processor's).
+double FixCrush::largest_mesh_displacement() const
+{
+  double largest = 0.0;
+  for (std::size_t k = 0; k < mesh_ids_.size(); k++) {
+    AbstractMesh *m = mesh(k);
+    if (!m) continue;
+    const std::vector<double> &ref = mesh_reference_[k];
+    const int per_element = 3 * m->numNodes();
+    for (int i = 0; i < m->sizeLocal(); i++)
+      for (int j = 0; j < m->numNodes(); j++) {
+        const std::size_t at = static_cast<std::size_t>(m->id_slow(i)) * per_element + 3 * j;
+        if (at + 3 > ref.size()) return std::numeric_limits<double>::infinity();  // a new element: check
+        double x[3];
+        m->node_slow(i, j, x);
+        const double dx = x[0] - ref[at], dy = x[1] - ref[at + 1], dz = x[2] - ref[at + 2];
+        largest = std::max(largest, std::sqrt(dx * dx + dy * dy + dz * dz));
+      }
+  }
+  return largest;
 }
 
 // D: the largest displacement of any particle, wall or periodic image since the last check, over
@@ -96,6 +147,7 @@ double FixCrush::largest_displacement() const
     if (Fix *f = wall(w))
       for (int k = 0; k < nwall_positions; k++)
         largest = std::max(largest, std::fabs(f->compute_vector(k) - wall_reference_[nwall_positions * w + k]));
+  largest = std::max(largest, largest_mesh_displacement());
   // A periodic image moves with the box length as well.
   for (int k = 0; k < 3; k++)
     if (domain->periodicity[k]) largest = std::max(largest, std::fabs(domain->prd[k] - box_reference_[k]));

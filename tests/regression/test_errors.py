@@ -8,8 +8,8 @@
 WHICH: event_log (fix crush cannot open its log: error->one on proc 0), time_step (a time step above
 the stable one: error->all), lost (a particle leaves the box), one_rank (an invalid atom type in a
 data file, found only by the proc that owns the atom: on 2 ranks proc 1 raises error->one alone),
-adaptive_mesh (fix crush 'every adaptive' beside a mesh moved by fix move/mesh, whose motion its bound
-does not cover: error->all in init).
+coincident (two grains created at one point: the contact has no normal, patches/0008 stops the run
+naming both tags, error->one on the proc that computes the contact).
 """
 import os
 import subprocess
@@ -37,29 +37,6 @@ Atoms
 2 3 0.0002 2650 0.0009 0.0009 0.0009
 """
 
-# A plane at z = 0 under the single grain, as a mesh (ASCII STL, two facets).
-PLANE_STL = """solid plane
-facet normal 0 0 1
- outer loop
-  vertex -0.0009 -0.0009 0
-  vertex 0.0009 -0.0009 0
-  vertex 0.0009 0.0009 0
- endloop
-endfacet
-facet normal 0 0 1
- outer loop
-  vertex -0.0009 -0.0009 0
-  vertex 0.0009 0.0009 0
-  vertex -0.0009 0.0009 0
- endloop
-endfacet
-endsolid plane
-"""
-
-MESH_FLOOR = """fix             plane all mesh/surface file plane.stl type 2
-fix             floor all wall/gran model hertz/scaled tangential mindlin/scaled mesh n_meshes 1 meshes plane
-fix             lift all move/mesh mesh plane linear 0.0 0.0 1e-3"""
-
 DATA_DECK = """atom_style      granular
 atom_modify     map array
 boundary        p p p
@@ -83,13 +60,11 @@ def failing_deck(case, work):
         return edited_deck(SINGLE, folder, [("fix             load all addforce 0.0 0.0 v_push",
                                              "fix             load all addforce 0.0 0.0 1.0")]), \
             "fix crush: 1 particles were lost"
-    if case == "adaptive_mesh":
-        deck = edited_deck(SINGLE, folder, [
-            ("variable        every index 1", "variable        every index adaptive"),
-            ("fix             floor all wall/gran model hertz/scaled tangential mindlin/scaled primitive type 2 zplane 0.0",
-             MESH_FLOOR)])
-        open(os.path.join(folder, "plane.stl"), "w").write(PLANE_STL)
-        return deck, "keyword 'every adaptive' bounds the motion of fix wall/servo walls only"
+    if case == "coincident":
+        single = "create_atoms    1 single 0.0 0.0 0.0001 units box"
+        deck = edited_deck(SINGLE, folder, [(single, single + "\n" + single),
+                                           ("set             atom 1 diameter", "set             group all diameter")])
+        return deck, "Pair gran: particles 1 and 2 touch with their centres at one point"
     if case == "one_rank":
         os.makedirs(folder, exist_ok=True)
         open(os.path.join(folder, "bad.data"), "w").write(BAD_DATA)
@@ -117,7 +92,7 @@ def check_error(liggghts, work, case, ranks):
 
 
 @variants(*[(which, ranks) for which in ("event_log", "time_step", "lost", "one_rank",
-                                                                 "adaptive_mesh") for ranks in (1, 2)])
+                                                                 "coincident") for ranks in (1, 2)])
 def case_redirected(liggghts, work, which, ranks):
     check_error(liggghts, work, which, ranks)
 
