@@ -83,6 +83,9 @@ void Checkpoint::command(int narg, char **arg)
   if (args[0] == "write") {
     if (args.size() > 2 && args[2] != "variables") fail("write: unknown keyword '" + args[2] + "' (expected 'variables')");
     write(base, std::vector<std::string>(args.begin() + std::min<std::size_t>(3, args.size()), args.end()));
+  } else if (args[0] == "clear") {
+    if (args.size() != 2) fail("expected 'checkpoint clear BASE'");
+    clear(base);
   } else if (args[0] == "find") {
     if (args.size() != 3) fail("expected 'checkpoint find BASE VAR'");
     find(base, args[2]);
@@ -92,7 +95,7 @@ void Checkpoint::command(int narg, char **arg)
     if (trim.size() % 2 != 0) fail("read: 'trim' expects pairs 'file title' (the title: the file's first line)");
     read(base, trim);
   } else {
-    fail("unknown action '" + args[0] + "' (expected write, find or read)");
+    fail("unknown action '" + args[0] + "' (expected write, find, read or clear)");
   }
 }
 
@@ -156,6 +159,20 @@ void Checkpoint::write(const std::string &base, const std::vector<std::string> &
     if (screen) fputs(line, screen);
     if (logfile) fputs(line, logfile);
   }
+}
+
+// A run that starts afresh removes the checkpoints of an earlier run under the same name: a later
+// resume must never fall back on another run's state.
+void Checkpoint::clear(const std::string &base)
+{
+  if (comm->me != 0) return;
+  int removed = 0;
+  for (const std::string &file : {crush::checkpoint_marker(base), crush::checkpoint_file(base, 1), crush::checkpoint_file(base, 2)})
+    if (std::remove(file.c_str()) == 0) removed++;
+  if (removed == 0) return;
+  const std::string line = "CHECKPOINT " + base + ": the earlier run's checkpoints removed (a new run starts)\n";
+  if (screen) fputs(line.c_str(), screen);
+  if (logfile) fputs(line.c_str(), logfile);
 }
 
 void Checkpoint::find(const std::string &base, const std::string &var)

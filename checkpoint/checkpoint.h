@@ -6,6 +6,8 @@
      renamed when complete, then the marker BASE.last (step, size, the named equal-style variables)
    checkpoint find BASE VAR
      sets the string variable VAR to the step of the newest complete checkpoint, or -1 if none
+   checkpoint clear BASE
+     removes BASE.last, BASE.1.restart and BASE.2.restart (a run that starts afresh)
    checkpoint read BASE [trim FILE TITLE ...]
      read_restart of the newest complete checkpoint, then the saved variables (equal style); each
      FILE (a CSV whose rows start with their step, TITLE its first line) loses the rows of steps
@@ -38,6 +40,7 @@ class Checkpoint : protected Pointers {
  private:
   void write(const std::string &base, const std::vector<std::string> &variables);
   void find(const std::string &base, const std::string &var);
+  void clear(const std::string &base);
   void read(const std::string &base, const std::vector<std::string> &trim);
   // The marker's entries and the newest complete one (-1: none), the same on every proc.
   std::vector<crush::CheckpointEntry> entries(const std::string &base, int &newest);
