@@ -9,8 +9,6 @@
 
 #include <cstdio>
 #include <algorithm>
-#include <fstream>
-#include <sstream>
 
 #include "comm.h"
 #include "crush_csv_rows.h"
@@ -30,16 +28,6 @@ long long file_size(const std::string &file)
 {
   struct stat st;
   return stat(file.c_str(), &st) == 0 ? static_cast<long long>(st.st_size) : -1;
-}
-
-bool read_text(const std::string &file, std::string &text)
-{
-  std::ifstream in(file, std::ios::binary);
-  if (!in) return false;
-  std::ostringstream all;
-  all << in.rdbuf();
-  text = all.str();
-  return true;
 }
 
 // Written under FILE.tmp, flushed to the disk, then renamed: FILE is always complete or absent.
@@ -108,7 +96,7 @@ std::vector<crush::CheckpointEntry> Checkpoint::entries(const std::string &base,
 {
   std::string text;
   int present = 0;
-  if (comm->me == 0) present = read_text(crush::checkpoint_marker(base), text) ? 1 : 0;
+  if (comm->me == 0) present = crush::read_text_file(crush::checkpoint_marker(base), text) ? 1 : 0;
   MPI_Bcast(&present, 1, MPI_INT, 0, world);
   newest = -1;
   if (!present) return {};
@@ -152,13 +140,10 @@ void Checkpoint::write(const std::string &base, const std::vector<std::string> &
   }
   MPI_Bcast(&ok, 1, MPI_INT, 0, world);
   if (!ok) fail("write: could not write " + entry.file + " or " + crush::checkpoint_marker(base) + " (disk full? permissions?)");
-  if (comm->me == 0) {
-    char line[512];
-    snprintf(line, sizeof(line), "CHECKPOINT step %lld: %s (%.1f MB, %.2f s)\n", entry.step, entry.file.c_str(),
-             entry.bytes / 1e6, MPI_Wtime() - start);
-    if (screen) fputs(line, screen);
-    if (logfile) fputs(line, logfile);
-  }
+  char line[512];
+  snprintf(line, sizeof(line), "CHECKPOINT step %lld: %s (%.1f MB, %.2f s)", entry.step, entry.file.c_str(),
+           entry.bytes / 1e6, MPI_Wtime() - start);
+  report(line);
 }
 
 // A run that starts afresh removes the checkpoints of an earlier run under the same name: a later
@@ -169,10 +154,7 @@ void Checkpoint::clear(const std::string &base)
   int removed = 0;
   for (const std::string &file : {crush::checkpoint_marker(base), crush::checkpoint_file(base, 1), crush::checkpoint_file(base, 2)})
     if (std::remove(file.c_str()) == 0) removed++;
-  if (removed == 0) return;
-  const std::string line = "CHECKPOINT " + base + ": the earlier run's checkpoints removed (a new run starts)\n";
-  if (screen) fputs(line.c_str(), screen);
-  if (logfile) fputs(line.c_str(), logfile);
+  if (removed > 0) report("CHECKPOINT " + base + ": the earlier run's checkpoints removed (a new run starts)");
 }
 
 void Checkpoint::find(const std::string &base, const std::string &var)
@@ -204,35 +186,32 @@ void Checkpoint::read(const std::string &base, const std::vector<std::string> &t
          std::to_string(entry.step));
   for (const auto &v : entry.variables) set_variable(v.first, "equal", v.second);
   for (std::size_t k = 0; k + 1 < trim.size(); k += 2) trim_file(trim[k], trim[k + 1], entry.step);
-  if (comm->me == 0) {
-    const std::string line = "CHECKPOINT resumed from " + entry.file + " at step " + std::to_string(entry.step) + "\n";
-    if (screen) fputs(line.c_str(), screen);
-    if (logfile) fputs(line.c_str(), logfile);
-  }
+  report("CHECKPOINT resumed from " + entry.file + " at step " + std::to_string(entry.step));
 }
 
 // Rows after the checkpoint's step go (the killed run wrote them after it). A file left without its
 // title (killed before its first row reached the disk) gets it back, so the resumed run appends.
 void Checkpoint::trim_file(const std::string &file, const std::string &title, long long step)
 {
-  int ok = 1;
-  std::string line;
+  int ok = 1, dropped = 0;
   if (comm->me == 0) {
     std::string text;
-    read_text(file, text);
-    int dropped = 0;
+    crush::read_text_file(file, text);
     std::string kept = crush::trim_rows(text, step, false, dropped);
     if (kept.compare(0, title.size() + 1, title + "\n") != 0) kept = title + "\n" + kept;
     ok = write_text_atomically(file, kept);
-    line = "CHECKPOINT " + file + ": " + std::to_string(dropped) + " rows after step " + std::to_string(step) +
-           " dropped\n";
   }
   MPI_Bcast(&ok, 1, MPI_INT, 0, world);
   if (!ok) fail("read: could not rewrite 'trim " + file + "'");
-  if (comm->me == 0) {
-    if (screen) fputs(line.c_str(), screen);
-    if (logfile) fputs(line.c_str(), logfile);
-  }
+  report("CHECKPOINT " + file + ": " + std::to_string(dropped) + " rows after step " + std::to_string(step) + " dropped");
+}
+
+// One line on the screen and in the log, from proc 0.
+void Checkpoint::report(const std::string &line)
+{
+  if (comm->me != 0) return;
+  if (screen) fprintf(screen, "%s\n", line.c_str());
+  if (logfile) fprintf(logfile, "%s\n", line.c_str());
 }
 
 void Checkpoint::set_variable(const std::string &name, const char *style, const std::string &value)

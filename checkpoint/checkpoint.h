@@ -46,6 +46,7 @@ class Checkpoint : protected Pointers {
   std::vector<crush::CheckpointEntry> entries(const std::string &base, int &newest);
   void trim_file(const std::string &file, const std::string &title, long long step);
   void set_variable(const std::string &name, const char *style, const std::string &value);
+  void report(const std::string &line);
   void fail(const std::string &what);  // error->all, naming the command
 };
 

@@ -1,6 +1,9 @@
 /* Crushing model (plain C++): see crush_csv_rows.h. */
 #include "crush_csv_rows.h"
 
+#include <fstream>
+#include <sstream>
+
 #include "crush_number.h"
 
 namespace crush {
@@ -28,6 +31,16 @@ std::string trim_rows(const std::string &csv, long long last_step, bool drop_las
     out += line + "\n";
   }
   return out;
+}
+
+bool read_text_file(const std::string &path, std::string &text)
+{
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return false;
+  std::ostringstream all;
+  all << in.rdbuf();
+  text = all.str();
+  return true;
 }
 
 }  // namespace crush

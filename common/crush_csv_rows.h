@@ -12,6 +12,9 @@ namespace crush {
 // line without its newline is a row cut short by a kill and goes. dropped: how many rows went.
 std::string trim_rows(const std::string &csv, long long last_step, bool drop_last_step, int &dropped);
 
+// The whole file as text; false (text untouched) where it cannot be opened.
+bool read_text_file(const std::string &path, std::string &text);
+
 }  // namespace crush
 
 #endif

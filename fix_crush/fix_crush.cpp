@@ -8,8 +8,6 @@
 #include <cstdio>
 #include <cstring>
 #include <limits>
-#include <fstream>
-#include <sstream>
 #include <string>
 
 #include "atom.h"
@@ -119,12 +117,10 @@ void FixCrush::open_log()
   std::string kept;
   bool continued = false;
   if (restart_step_ >= 0) {
-    std::ifstream in(settings_.log_file, std::ios::binary);
-    if (in) {
-      std::ostringstream all;
-      all << in.rdbuf();
+    std::string text;
+    if (crush::read_text_file(settings_.log_file, text)) {
       int dropped = 0;
-      kept = crush::trim_rows(all.str(), restart_step_, true, dropped);
+      kept = crush::trim_rows(text, restart_step_, true, dropped);
       continued = kept.find('\n') != std::string::npos;
       if (continued && screen)
         fprintf(screen, "fix crush: continuing the event log %s from step " BIGINT_FORMAT " (%d rows of later steps dropped)\n",

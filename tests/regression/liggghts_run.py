@@ -14,6 +14,19 @@ def check(condition, message):
     print("ok: " + message)
 
 
+def deck_command(liggghts, deck_name, variables=None, ranks=1):
+    """The command line of `liggghts -in deck_name -log log.liggghts -var ...`, under mpiexec beyond
+    one rank (oversubscribed, and allowed as root: containers, CI)."""
+    cmd = [liggghts, "-in", deck_name, "-log", "log.liggghts"]
+    for name, value in (variables or {}).items():
+        cmd += ["-var", name, str(value)]
+    if ranks > 1:
+        cmd = ["mpiexec", "-n", str(ranks), "--oversubscribe"] + cmd
+        os.environ.setdefault("OMPI_ALLOW_RUN_AS_ROOT", "1")
+        os.environ.setdefault("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1")
+    return cmd
+
+
 def run_deck(liggghts, deck, workdir, variables=None, ranks=1, expect_fail=False, keep=False):
     """Runs `liggghts -in deck` in workdir (created afresh, or kept with keep=True: to run a deck on
     the outputs of another) with -var name value pairs; returns the screen output. Decks may include
@@ -21,13 +34,7 @@ def run_deck(liggghts, deck, workdir, variables=None, ranks=1, expect_fail=False
     if os.path.isdir(workdir) and not keep:
         shutil.rmtree(workdir)
     shutil.copytree(os.path.dirname(os.path.abspath(deck)), workdir, dirs_exist_ok=True)
-    cmd = [liggghts, "-in", os.path.basename(deck), "-log", "log.liggghts"]
-    for name, value in (variables or {}).items():
-        cmd += ["-var", name, str(value)]
-    if ranks > 1:
-        cmd = ["mpiexec", "-n", str(ranks), "--oversubscribe"] + cmd
-        os.environ.setdefault("OMPI_ALLOW_RUN_AS_ROOT", "1")
-        os.environ.setdefault("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1")
+    cmd = deck_command(liggghts, os.path.basename(deck), variables, ranks)
     proc = subprocess.run(cmd, cwd=workdir, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                           universal_newlines=True, errors="replace")
     if expect_fail:

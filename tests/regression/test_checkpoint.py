@@ -15,7 +15,7 @@ import sys
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from liggghts_run import check, each_rank_count, run_deck, variants  # noqa: E402
+from liggghts_run import check, deck_command, each_rank_count, run_deck, variants  # noqa: E402
 from liggghts_run import main as test_main  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
@@ -45,21 +45,10 @@ def copy_sample(sample, folder, checkpoints=False):
     return folder
 
 
-def command(liggghts, ranks, variables, deck="in.oedometer"):
-    cmd = [liggghts, "-in", deck, "-log", "log.liggghts"]
-    for name, value in variables.items():
-        cmd += ["-var", name, str(value)]
-    if ranks > 1:
-        cmd = ["mpiexec", "-n", str(ranks), "--oversubscribe"] + cmd
-        os.environ.setdefault("OMPI_ALLOW_RUN_AS_ROOT", "1")
-        os.environ.setdefault("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1")
-    return cmd
-
-
 def run(liggghts, folder, ranks, variables, deck="in.oedometer", expect_fail=False):
     """The deck in folder (which holds the decks); with expect_fail, it must end with an ERROR line
     and no signal."""
-    proc = subprocess.run(command(liggghts, ranks, variables, deck), cwd=folder, stdout=subprocess.PIPE,
+    proc = subprocess.run(deck_command(liggghts, deck, variables, ranks), cwd=folder, stdout=subprocess.PIPE,
                           stderr=subprocess.STDOUT, universal_newlines=True, errors="replace")
     if expect_fail:
         check(proc.returncode > 0 and "ERROR" in proc.stdout, "%s stopped with an error (exit %d)" % (deck, proc.returncode))
@@ -69,24 +58,25 @@ def run(liggghts, folder, ranks, variables, deck="in.oedometer", expect_fail=Fal
     return proc.stdout
 
 
-def newest_checkpoint(folder):
+def newest_checkpoint(folder, base="ckpt_O2"):
     """The newest step the marker records (None before the first checkpoint)."""
     try:
-        with open(os.path.join(folder, "ckpt_O2.last")) as f:
+        with open(os.path.join(folder, base + ".last")) as f:
             rows = [line.split() for line in f if line.strip() and not line.startswith("#")]
     except FileNotFoundError:
         return None
     return int(rows[-1][0]) if rows else None
 
 
-def kill_after(liggghts, folder, ranks, variables, step, delay):
-    """Starts the run, SIGKILLs it (the whole process group: mpiexec and its ranks) `delay` seconds
-    after the marker names the checkpoint of `step`; returns the step of the newest checkpoint then."""
-    proc = subprocess.Popen(command(liggghts, ranks, variables), cwd=folder, stdout=subprocess.DEVNULL,
+def kill_after(liggghts, folder, ranks, variables, step, delay, deck="in.oedometer", base="ckpt_O2"):
+    """Starts the deck, SIGKILLs it (the whole process group: mpiexec and its ranks) `delay` seconds
+    after the marker `base`.last names the checkpoint of `step` or a later one; returns the step of
+    the newest checkpoint then."""
+    proc = subprocess.Popen(deck_command(liggghts, deck, variables, ranks), cwd=folder, stdout=subprocess.DEVNULL,
                             stderr=subprocess.DEVNULL, start_new_session=True)
     deadline = time.time() + 600
     while time.time() < deadline and proc.poll() is None:
-        newest = newest_checkpoint(folder)
+        newest = newest_checkpoint(folder, base)
         if newest is not None and newest >= step:
             time.sleep(delay)
             break
@@ -97,7 +87,7 @@ def kill_after(liggghts, folder, ranks, variables, step, delay):
     proc.wait()
     while subprocess.run(["pgrep", "-s", str(proc.pid)], stdout=subprocess.DEVNULL).returncode == 0:
         time.sleep(0.05)
-    return newest_checkpoint(folder)
+    return newest_checkpoint(folder, base)
 
 
 def read_rows(path):
@@ -207,14 +197,8 @@ def case_resume_triaxial(liggghts, work):
     reference = copy_sample(sample, os.path.join(work, "uninterrupted"))
     triaxial(reference)
     folder = copy_sample(sample, os.path.join(work, "killed"))
-    proc = subprocess.Popen(command(liggghts, 1, variables, "in.triaxial"), cwd=folder, stdout=subprocess.DEVNULL,
-                            stderr=subprocess.DEVNULL, start_new_session=True)
-    while proc.poll() is None and not os.path.exists(os.path.join(folder, "ckpt_Tdense2.last")):
-        time.sleep(0.002)
-    time.sleep(0.1)
-    subprocess.run(["pkill", "-KILL", "-s", str(proc.pid)])
-    proc.wait()
-    check(os.path.exists(os.path.join(folder, "ckpt_Tdense2.last")), "killed after the first checkpoint")
+    newest = kill_after(liggghts, folder, 1, variables, 0, 0.1, deck="in.triaxial", base="ckpt_Tdense2")
+    check(newest is not None, "killed after the first checkpoint (step %s)" % newest)
     out = triaxial(folder, {"resume": 1})
     check("CHECKPOINT resumed from" in out, "resumed from a checkpoint")
     a, b = open(os.path.join(reference, history)).read(), open(os.path.join(folder, history)).read()

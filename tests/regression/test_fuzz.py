@@ -15,7 +15,7 @@ import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from liggghts_run import check, each_rank_count, variants  # noqa: E402
+from liggghts_run import check, deck_command, each_rank_count, variants  # noqa: E402
 from liggghts_run import main as test_main  # noqa: E402
 
 MATERIALS = """fix             m1 all property/global youngsModulus peratomtype 7.8e9 7.8e9
@@ -202,15 +202,6 @@ CASES = SIZES + MODULI + STRENGTHS + GEOMETRY + MISSING + QUASI_STATIC + DATA_FI
 SIGNALS = ("terminate called", "what():", "Segmentation fault", "core dumped", "Signal: ", "Aborted")
 
 
-def launcher(liggghts, ranks, deck_file):
-    cmd = [liggghts, "-in", deck_file, "-log", "log.liggghts"]
-    if ranks > 1:
-        cmd = ["mpiexec", "-n", str(ranks), "--oversubscribe"] + cmd
-        os.environ.setdefault("OMPI_ALLOW_RUN_AS_ROOT", "1")
-        os.environ.setdefault("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1")
-    return cmd
-
-
 def good_restart(liggghts, work):
     """A complete restart file of the base deck, for the cut ones."""
     folder = os.path.join(work, "_restart_source")
@@ -244,7 +235,7 @@ def run_case(liggghts, work, ranks, name, case, restart_bytes):
     if os.path.exists(log):
         os.remove(log)
     try:
-        proc = subprocess.run(launcher(liggghts, ranks, "in.deck"), cwd=folder, stdout=subprocess.PIPE,
+        proc = subprocess.run(deck_command(liggghts, "in.deck", ranks=ranks), cwd=folder, stdout=subprocess.PIPE,
                               stderr=subprocess.STDOUT, universal_newlines=True, errors="replace", timeout=120)
     except subprocess.TimeoutExpired:
         raise AssertionError("%s (%d ranks): no end within 120 s" % (name, ranks))

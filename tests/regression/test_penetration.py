@@ -11,7 +11,7 @@ import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from liggghts_run import check, each_rank_count, read_thermo, run_deck, variants  # noqa: E402
+from liggghts_run import check, each_rank_count, printed, read_thermo, run_deck, variants  # noqa: E402
 from liggghts_run import main as test_main  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
@@ -123,18 +123,11 @@ def case_adaptive(liggghts, work, ranks):
         write_meshes(folder, 0.002, 0.008, 0.0033, 48)
         out = run_deck(liggghts, DECK, folder, {"sigma": 3e8, "every": every}, ranks=int(ranks), keep=True)
         logs[every] = open(os.path.join(folder, "events.csv")).read()
-        checked[every] = int(float(printed_value(out, "CHECKED")))
+        checked[every] = int(printed(out, "CHECKED"))
     events = logs["1"].count("\n") - 1
     check(events > 0 and logs["adaptive"] == logs["1"],
           "every adaptive: the same %d events at the same steps as every 1" % events)
     check(checked["adaptive"] < checked["1"], "every adaptive checked %d of the %d steps" % (checked["adaptive"], checked["1"]))
-
-
-def printed_value(out, key):
-    for line in out.splitlines():
-        if line.startswith(key + " "):
-            return line.split()[1]
-    raise AssertionError("the run printed no %s line" % key)
 
 
 if __name__ == "__main__":
