@@ -21,6 +21,7 @@ install(PROGRAMS "$<TARGET_FILE:liggghts>" DESTINATION "${CMAKE_INSTALL_BINDIR}"
 install(DIRECTORY "${PROJECT_SOURCE_DIR}/examples/" DESTINATION "${_share}/examples" COMPONENT runtime
         FILES_MATCHING PATTERN "in.*" PATTERN "*.py")
 install(PROGRAMS "${PROJECT_SOURCE_DIR}/post/plot.py" "${PROJECT_SOURCE_DIR}/post/summary.py"
+                 "${PROJECT_SOURCE_DIR}/post/penetration.py"
         DESTINATION "${_share}/post" COMPONENT runtime)
 install(FILES "${PROJECT_SOURCE_DIR}/post/paper.py" DESTINATION "${_share}/post" COMPONENT runtime)
 install(FILES "${PROJECT_SOURCE_DIR}/README.md" DESTINATION "${_doc}" COMPONENT runtime)

@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
 """The penetrometer of examples/penetration: the meshes penetrometer.py writes (geometry against the
-analytic cone and shaft), and those meshes pushed into a bed of grains by fix move/mesh, feeding fix
-crush through fix wall/gran hertz/scaled.
+analytic cone and shaft), those meshes pushed into a bed of grains by fix move/mesh, feeding fix
+crush through fix wall/gran hertz/scaled, and the scene's decks on a small chamber (in.chamber,
+in.cone: 3 D_c of penetration into some 700 grains, D_c / d50 = 2.1), with post/penetration.py on
+their outputs.
 
   python3 test_penetration.py LIGGGHTS WORKDIR CASE"""
 import math
@@ -13,10 +15,17 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from liggghts_run import check, each_rank_count, printed, read_thermo, run_deck, variants  # noqa: E402
 from liggghts_run import main as test_main  # noqa: E402
+from liggghts_run import read_dump  # noqa: E402
+from test_checkpoint import kill_after  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 SCRIPT = os.path.join(ROOT, "examples", "penetration", "penetrometer.py")
 DECK = os.path.join(os.path.dirname(os.path.abspath(__file__)), "penetration", "in.push")
+EXAMPLES = os.path.join(ROOT, "examples")
+POST = os.path.join(ROOT, "post", "penetration.py")
+# the small chamber: 6 D_c wide (a quarter of 3 D_c a side), 3 D_c of penetration and 2 D_c below it
+CHAMBER = {"N": 80, "width": 6, "depth": 3, "below": 2}
+DC = 0.0357
 
 
 def write_meshes(folder, diameter, shaft, tip, segments):
@@ -128,6 +137,143 @@ def case_adaptive(liggghts, work, ranks):
     check(events > 0 and logs["adaptive"] == logs["1"],
           "every adaptive: the same %d events at the same steps as every 1" % events)
     check(checked["adaptive"] < checked["1"], "every adaptive checked %d of the %d steps" % (checked["adaptive"], checked["1"]))
+
+
+def prepare_chamber(liggghts, work, ranks, density="dense"):
+    """examples/penetration and examples/fontainebleau (whose files in.cone includes) copied into
+    work, and the small chamber prepared there (in.chamber); returns the penetration folder."""
+    for name in ("penetration", "fontainebleau"):
+        target = os.path.join(work, name)
+        if os.path.isdir(target):
+            shutil.rmtree(target)
+        shutil.copytree(os.path.join(EXAMPLES, name), target)
+    folder = os.path.join(work, "penetration")
+    variables = dict(CHAMBER, density=density)
+    run_deck(liggghts, os.path.join(EXAMPLES, "penetration", "in.chamber"), folder, variables, ranks=ranks, keep=True)
+    return folder
+
+
+def push(liggghts, folder, ranks, **variables):
+    """in.cone on the small chamber (v = 2 m/s unless given); returns the screen output."""
+    settings = dict(CHAMBER, v=2, **variables)
+    return run_deck(liggghts, os.path.join(EXAMPLES, "penetration", "in.cone"), folder, settings, ranks=ranks, keep=True)
+
+
+def read_rows(path):
+    import csv
+    with open(path) as f:
+        return [dict((k, float(v)) for k, v in row.items()) for row in csv.DictReader(f)]
+
+
+def tip_at(history, step):
+    """The tip's z at a step, interpolated between the history's rows."""
+    for a, b in zip(history, history[1:]):
+        if a["step"] <= step <= b["step"]:
+            return a["tip_z"] + (step - a["step"]) / (b["step"] - a["step"]) * (b["tip_z"] - a["tip_z"])
+    return history[0]["tip_z"] if step < history[0]["step"] else history[-1]["tip_z"]
+
+
+def grains0(folder):
+    text = open(os.path.join(folder, "chamber_dense_N80.in")).read()
+    return int(float(text.split("variable grains0 equal")[1].split()[0]))
+
+
+@variants(*each_rank_count(1, 2))
+def case_cone_short(liggghts, work, ranks):
+    """A short penetration (3 D_c) with crushing in the zone that follows the tip, on 1 and 2 ranks:
+    the books (particles = grains + 13 x events at every row) and unique tags; q_c > 0 and rising
+    with depth; every event inside the moving zone (1.5 D_c around the axis, from 1.5 D_c below the
+    tip to 1 D_c above it) at its step; the VTK files of the particles and of the penetrometer read
+    back; post/penetration.py draws and summarises the test."""
+    ranks = int(ranks)
+    folder = prepare_chamber(liggghts, work, ranks)
+    out = push(liggghts, folder, ranks, crushing="region", vtk_every=1)
+    history = read_rows(os.path.join(folder, "penetration_dense_region_N80.csv"))
+    n0 = grains0(folder)
+    check(all(r["particles"] == n0 + 13 * r["events"] for r in history),
+          "particles = %d + 13 x events at every one of %d rows (%d events at the end)" % (n0, len(history), history[-1]["events"]))
+    _, _, atoms = read_dump(os.path.join(folder, "particles_dense_region_N80.liggghts"))[0]
+    tags = [int(a["id"]) for a in atoms]
+    check(len(set(tags)) == len(tags) == history[-1]["particles"], "%d particles, every tag unique" % len(tags))
+    shallow = [r["q_c"] for r in history if r["depth_Dc"] < 0.5]
+    deep = [r["q_c"] for r in history if r["depth_Dc"] > 2.0]
+    mean = lambda v: sum(v) / len(v)  # noqa: E731
+    check(min(deep) >= 0 and mean(deep) > 0 and mean(deep) > 2 * mean(shallow),
+          "q_c rises with depth: %.3g MPa over 2 - 3 D_c against %.3g over 0 - 0.5 D_c" % (mean(deep) / 1e6, mean(shallow) / 1e6))
+    events = read_rows(os.path.join(folder, "events_pen_dense_region_N80.csv"))
+    check(len(events) == history[-1]["events"] and len(events) > 0, "%d events logged" % len(events))
+    tolerance = 0.02 * DC
+    inside = [math.hypot(e["x"], e["y"]) <= 1.5 * DC + tolerance
+              and -1.5 * DC - tolerance <= e["z"] - tip_at(history, e["step"]) <= 1.0 * DC + tolerance for e in events]
+    check(all(inside), "every event inside the zone around the tip at its step")
+    if "custom/vtk" in subprocess.run([liggghts, "-h"], stdout=subprocess.PIPE, universal_newlines=True).stdout:
+        try:
+            import vtk
+        except ImportError:
+            vtk = None
+        if vtk is not None:
+            reader = vtk.vtkXMLUnstructuredGridReader()
+            reader.SetFileName(os.path.join(folder, "vtk_dense_region_N80_end.vtu"))
+            reader.Update()
+            points = reader.GetOutput().GetNumberOfPoints()
+            check(points == history[-1]["particles"], "the final .vtu holds the %d particles" % points)
+            meshes = sorted(f for f in os.listdir(folder) if f.startswith("mesh_dense_region_N80_") and f.endswith(".vtk"))
+            mesh = vtk.vtkDataSetReader()
+            mesh.SetFileName(os.path.join(folder, meshes[-1]))
+            mesh.Update()
+            cells = mesh.GetOutput().GetNumberOfCells()
+            check(len(meshes) >= 2 and cells == 12 + 24 + 24,
+                  "%d penetrometer .vtk files, the last with the %d facets of cone, sleeve and shaft" % (len(meshes), cells))
+    check("PENETRATION dense_region: depth" in out and "min left" in out, "progress lines with the depth and the time left")
+    plot = subprocess.run(["/usr/bin/python3", POST, "--N", "80", "--Dc", str(DC), "--plateau", "1.5", "--out", "test",
+                           "dense_region"], cwd=folder, stdout=subprocess.PIPE, universal_newlines=True, check=True).stdout
+    check(all(os.path.exists(os.path.join(folder, f)) for f in ("penetration_test.png", "events_test.png", "gsd_test.png")),
+          "post/penetration.py drew q_c, the events and the gradings")
+    summary = read_rows_text(os.path.join(folder, "penetration_test_summary.csv"))
+    check(float(summary[0]["q_c_MPa"]) > 0 and float(summary[0]["I_G_near"]) > float(summary[0]["I_G_far"]),
+          "summary: q_c %.3g MPa over the plateau; I_G %.3f near the tip above %.3f far from it (%s)"
+          % (float(summary[0]["q_c_MPa"]), float(summary[0]["I_G_near"]), float(summary[0]["I_G_far"]), plot.strip()))
+
+
+def read_rows_text(path):
+    import csv
+    with open(path) as f:
+        return list(csv.DictReader(f))
+
+
+@variants(*each_rank_count(1, 2))
+def case_cone_adaptive(liggghts, work, ranks):
+    """fix crush 'every adaptive' in the scene (crushing everywhere: the burst of the grains without
+    strength at the start, then the grains the cone loads): the same events at the same steps, with
+    the same fragment tags, as 'every 1', on 1 and 2 ranks. (It checks every step here: the cone
+    moves further each step than the bound allows the grains at their limit under it, and an unloaded
+    grain of zero strength allows no step; doc/penetration.md.)"""
+    ranks = int(ranks)
+    folder = prepare_chamber(liggghts, work, ranks)
+    logs = {}
+    for every in ("1", "adaptive"):
+        push(liggghts, folder, ranks, crushing=1, crush_every=every, label="every_" + every, depth=2, vtk=0)
+        logs[every] = open(os.path.join(folder, "events_pen_every_%s_N80.csv" % every)).read()
+    events = logs["1"].count("\n") - 1
+    check(events > 0 and logs["adaptive"] == logs["1"], "every adaptive: the same %d events as every 1" % events)
+
+
+def case_cone_resume(liggghts, work):
+    """A test killed right after a checkpoint resumes (-var resume 1) to the same history and events
+    as the uninterrupted one: the meshes, their motion and the tip's clock come back."""
+    folder = prepare_chamber(liggghts, work, 1)
+    settings = dict(CHAMBER, v=2, crushing="region", vtk=0, checkpoint_every=10000)
+    run_deck(liggghts, os.path.join(EXAMPLES, "penetration", "in.cone"), folder, dict(settings, label="whole"), keep=True)
+    variables = dict(settings, label="killed")
+    # in.chamber ends at step 90000, where the test begins: killed after its second checkpoint
+    newest = kill_after(liggghts, folder, 1, variables, 90000 + 20000, 0.3, deck="in.cone", base="ckpt_pen_killed_N80")
+    check(newest is not None and newest >= 110000, "killed after the checkpoint of step %s" % newest)
+    run_deck(liggghts, os.path.join(EXAMPLES, "penetration", "in.cone"), folder, dict(variables, resume=1), keep=True)
+    for name in ("penetration_%s_N80.csv", "events_pen_%s_N80.csv"):
+        whole = open(os.path.join(folder, name % "whole")).read()
+        resumed = open(os.path.join(folder, name % "killed")).read()
+        check(whole == resumed and whole.count("\n") > 2, "%s: the resumed test's %d lines are the uninterrupted one's"
+              % (name % "killed", resumed.count("\n")))
 
 
 if __name__ == "__main__":

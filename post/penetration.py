@@ -1,0 +1,222 @@
+#!/usr/bin/python3
+"""Figures and tables of the cone penetration tests of examples/penetration (in.cone), for any set of
+tests of one chamber.
+
+    post/penetration.py --N 60 --Dc 0.0357 [--dir .] [--out dense_N60] LABEL ...
+
+Reads, for each LABEL (in.cone's label, e.g. dense_1 and dense_0), penetration_LABEL_N<N>.csv,
+events_pen_LABEL_N<N>.csv and particles_LABEL_N<N>.liggghts in --dir, and writes there:
+  penetration_OUT.png    q_c (MPa) and the sleeve friction f_s (kPa) against the tip's depth (D_c)
+  events_OUT.png         where the grains broke, in (r, z - z_tip) / D_c around the tip at each event:
+                         grains loaded to their limit F_lim, and grains without strength (a zero draw
+                         of the Table 3 reading, distribution normal_clipped_originals: force ratio
+                         inf), which break under their first load wherever the crushing zone finds them
+  gsd_OUT.png, gsd_OUT.csv   the grading (percent passing against the downscaled size) and I_G near
+                         the final tip (within --zone D_c of it) and in the far field (beyond --far D_c
+                         of the axis), the removed volume counted as fractal fines as compute crush/gsd
+                         counts it
+  penetration_OUT_summary.csv   per test: q_c and f_s averaged over the plateau (depths from
+                         --plateau D_c to the end), their spread, events, particles, I_G near and far
+and prints the summary.
+"""
+import argparse
+import csv
+import math
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+FRACTAL_DIMENSION = 2.5  # fix crush's default fines_dimension
+D_MAX = 0.42e-3  # the decks' dmax for I_G (m, downscaled: examples/fontainebleau/in.load_stage)
+SIEVES = [0.01e-3, 0.02e-3, 0.05e-3, 0.075e-3, 0.1e-3, 0.15e-3, 0.2e-3, 0.25e-3, 0.3e-3, 0.35e-3, 0.45e-3]
+
+
+def read_csv(path):
+    with open(path) as f:
+        return [dict((k, float(v)) for k, v in row.items()) for row in csv.DictReader(f)]
+
+
+def read_dump(path):
+    """{tag: (x, y, z, radius, generation)} of a dump custom 'id type x y z radius f_crush[2]'."""
+    atoms, lines = {}, open(path).read().split("\n")
+    start = next(i for i, line in enumerate(lines) if line.startswith("ITEM: ATOMS")) + 1
+    for line in lines[start:]:
+        w = line.split()
+        if len(w) >= 7:
+            atoms[int(w[0])] = (float(w[2]), float(w[3]), float(w[4]), float(w[5]), float(w[6]))
+    return atoms
+
+
+def tip_at(history, step):
+    """z of the tip at a step, interpolated in the history (tip_z column)."""
+    rows = history
+    if step <= rows[0]["step"]:
+        return rows[0]["tip_z"]
+    for a, b in zip(rows, rows[1:]):
+        if a["step"] <= step <= b["step"]:
+            w = (step - a["step"]) / (b["step"] - a["step"])
+            return a["tip_z"] + w * (b["tip_z"] - a["tip_z"])
+    return rows[-1]["tip_z"]
+
+
+def kept_fraction(events, atoms):
+    """The volume fraction of a mother its fragments keep, measured on the first event whose fragments
+    all remain (the layout's constant: about 0.53 for the 14 fragments)."""
+    for e in events:
+        tags = [int(v) for k, v in e.items() if k.startswith("fragment_")]
+        if tags and all(t in atoms for t in tags):
+            return sum((2 * atoms[t][3]) ** 3 for t in tags) / e["diameter"] ** 3
+    return None
+
+
+def grading(particles, removed, fines_top, N):
+    """Percent passing at SIEVES and I_G of (diameter, volume) particles plus a removed volume spread
+    as fractal fines below fines_top (all sizes downscaled by N)."""
+    total = sum(v for _, v in particles) + removed
+
+    def passing(size):
+        solid = sum(v for d, v in particles if d / N < size)
+        fines = removed * (min(size / fines_top, 1.0) ** (3 - FRACTAL_DIMENSION) if fines_top > 0 else 1.0)
+        return (solid + fines) / total
+
+    grid = [D_MAX * (k + 0.5) / 400 for k in range(400)]
+    area = sum(passing(s) for s in grid) * D_MAX / 400
+    limiting = D_MAX / (4.0 - FRACTAL_DIMENSION)
+    return [100 * passing(s) for s in SIEVES], area / limiting
+
+
+def zone_gradings(atoms, events, kept, history, Dc, N, zone, far):
+    tip = history[-1]["tip_z"]
+    near_p, far_p, near_removed, far_removed = [], [], 0.0, 0.0
+    for x, y, z, r, _ in atoms.values():
+        d, v = 2 * r, math.pi / 6 * (2 * r) ** 3
+        if math.sqrt(x * x + y * y + (z - tip) ** 2) < zone * Dc:
+            near_p.append((d, v))
+        elif math.sqrt(x * x + y * y) > far * Dc:
+            far_p.append((d, v))
+    for e in events:
+        removed = math.pi / 6 * e["diameter"] ** 3 * (1 - kept)
+        if math.sqrt(e["x"] ** 2 + e["y"] ** 2 + (e["z"] - tip) ** 2) < zone * Dc:
+            near_removed += removed
+        elif math.sqrt(e["x"] ** 2 + e["y"] ** 2) > far * Dc:
+            far_removed += removed
+    fragments = [2 * r for _, _, _, r, g in atoms.values() if g > 0]
+    fines_top = min(fragments) / N if fragments else 0.0
+    return (grading(near_p, near_removed, fines_top, N), len(near_p)), (grading(far_p, far_removed, fines_top, N), len(far_p))
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("labels", nargs="+", help="the tests' labels (or one comma-separated list)")
+    parser.add_argument("--N", type=float, required=True, help="the scale factor of the tests")
+    parser.add_argument("--Dc", type=float, required=True, help="the cone's diameter (m)")
+    parser.add_argument("--dir", default=".")
+    parser.add_argument("--out", default="penetration")
+    parser.add_argument("--plateau", type=float, default=4.0, help="start of the plateau (D_c)")
+    parser.add_argument("--zone", type=float, default=1.5, help="near-tip zone radius (D_c)")
+    parser.add_argument("--far", type=float, default=3.0, help="far field: beyond this distance from the axis (D_c)")
+    a = parser.parse_args()
+    a.labels = [label for arg in a.labels for label in arg.split(",") if label]  # in.penetration joins them
+    n_label = "%g" % a.N
+    summary, tests = [], []
+    for label in a.labels:
+        path = os.path.join(a.dir, "penetration_%s_N%s.csv" % (label, n_label))
+        if not os.path.exists(path):
+            sys.exit("penetration.py: no %s (run in.cone with -var label %s -var N %s)" % (path, label, n_label))
+        history = read_csv(path)
+        events_path = os.path.join(a.dir, "events_pen_%s_N%s.csv" % (label, n_label))
+        events = read_csv(events_path) if os.path.exists(events_path) else []
+        dump = os.path.join(a.dir, "particles_%s_N%s.liggghts" % (label, n_label))
+        atoms = read_dump(dump) if os.path.exists(dump) else {}
+        tests.append((label, history, events, atoms))
+        plateau = [r for r in history if r["depth_Dc"] >= a.plateau]
+        qc = [r["q_c"] for r in plateau]
+        fs = [r["f_s"] for r in plateau]
+        mean = lambda v: sum(v) / len(v) if v else float("nan")  # noqa: E731
+        sd = lambda v: math.sqrt(sum((x - mean(v)) ** 2 for x in v) / len(v)) if v else float("nan")  # noqa: E731
+        row = {"label": label, "q_c_MPa": mean(qc) / 1e6, "q_c_sd_MPa": sd(qc) / 1e6, "f_s_kPa": mean(fs) / 1e3,
+               "f_s_sd_kPa": sd(fs) / 1e3, "depth_Dc": history[-1]["depth_Dc"], "events": history[-1]["events"],
+               "particles": history[-1]["particles"],
+               "events_loaded": sum(1 for e in events if math.isfinite(e["force_ratio"])), "I_G_near": float("nan"), "I_G_far": float("nan"),
+               "grains_near": 0, "grains_far": 0}
+        kept = kept_fraction(events, atoms) if events else 1.0
+        if atoms and kept is not None:
+            (near, n_near), (far, n_far) = zone_gradings(atoms, events, kept, history, a.Dc, a.N, a.zone, a.far)
+            row.update({"I_G_near": near[1], "I_G_far": far[1], "grains_near": n_near, "grains_far": n_far,
+                        "near": near[0], "far": far[0]})
+        summary.append(row)
+
+    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(10, 5), sharey=True)
+    for label, history, _, _ in tests:
+        depth = [r["depth_Dc"] for r in history]
+        ax1.plot([r["q_c"] / 1e6 for r in history], depth, label=label)
+        ax2.plot([r["f_s"] / 1e3 for r in history], depth, label=label)
+    ax1.set_xlabel("q_c (MPa)")
+    ax2.set_xlabel("f_s (kPa)")
+    ax1.set_ylabel("depth of the tip (D_c)")
+    ax1.invert_yaxis()
+    for ax in (ax1, ax2):
+        ax.grid(alpha=0.3)
+        ax.legend()
+    fig.suptitle("Cone penetration, N = %s, D_c / d50 = %.2f" % (n_label, a.Dc / (0.21e-3 * a.N)))
+    fig.tight_layout()
+    fig.savefig(os.path.join(a.dir, "penetration_%s.png" % a.out), dpi=120)
+
+    broken = [(label, history, events) for label, history, events, _ in tests if events]
+    if broken:
+        fig, axes = plt.subplots(1, len(broken), figsize=(5 * len(broken), 6), squeeze=False)
+        for ax, (label, history, events) in zip(axes[0], broken):
+            depth = [r_["depth_Dc"] for r_ in history]
+            for kind, chosen, marker in (("loaded to F_lim", [e for e in events if math.isfinite(e["force_ratio"])], "o"),
+                                         ("no strength (first load)", [e for e in events if not math.isfinite(e["force_ratio"])], "x")):
+                r = [math.hypot(e["x"], e["y"]) / a.Dc for e in chosen]
+                z = [(e["z"] - tip_at(history, e["step"])) / a.Dc for e in chosen]
+                ax.scatter(r, z, s=10, marker=marker, label="%s: %d" % (kind, len(chosen)))
+            ax.legend(fontsize=8, loc="upper right")
+            ax.plot([0, 0.5, 0.5], [0, 0.866, 4], color="k", lw=1)  # the cone and the sleeve's side
+            ax.set_xlabel("r / D_c")
+            ax.set_ylabel("(z - z_tip) / D_c")
+            ax.set_title("%s: %d events to %.1f D_c" % (label, len(events), depth[-1]))
+            ax.set_ylim(-4, 4)
+            ax.set_xlim(0, 5)
+            ax.grid(alpha=0.3)
+        fig.tight_layout()
+        fig.savefig(os.path.join(a.dir, "events_%s.png" % a.out), dpi=120)
+
+    graded = [row for row in summary if "near" in row]
+    if graded:
+        with open(os.path.join(a.dir, "gsd_%s.csv" % a.out), "w") as f:
+            f.write("size_mm," + ",".join("%s_near,%s_far" % (r["label"], r["label"]) for r in graded) + "\n")
+            for k, s in enumerate(SIEVES):
+                f.write("%g," % (s * 1e3) + ",".join("%.4f,%.4f" % (r["near"][k], r["far"][k]) for r in graded) + "\n")
+        fig, ax = plt.subplots(figsize=(6, 5))
+        for r in graded:
+            line, = ax.semilogx([s * 1e3 for s in SIEVES], r["near"], label="%s near the tip (I_G %.3f)" % (r["label"], r["I_G_near"]))
+            ax.semilogx([s * 1e3 for s in SIEVES], r["far"], ls="--", color=line.get_color(),
+                        label="%s far field (I_G %.3f)" % (r["label"], r["I_G_far"]))
+        ax.set_xlabel("size (mm, downscaled)")
+        ax.set_ylabel("percent passing")
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=8)
+        fig.tight_layout()
+        fig.savefig(os.path.join(a.dir, "gsd_%s.png" % a.out), dpi=120)
+
+    columns = ["label", "q_c_MPa", "q_c_sd_MPa", "f_s_kPa", "f_s_sd_kPa", "depth_Dc", "events", "events_loaded", "particles",
+               "I_G_near", "I_G_far", "grains_near", "grains_far"]
+    with open(os.path.join(a.dir, "penetration_%s_summary.csv" % a.out), "w") as f:
+        f.write(",".join(columns) + "\n")
+        for row in summary:
+            f.write(",".join(row[c] if isinstance(row[c], str) else "%.6g" % row[c] for c in columns) + "\n")
+    for row in summary:
+        print("PENETRATION %s: q_c %.3f MPa (sd %.3f) and f_s %.2f kPa over %.1f - %.1f D_c, %d events (%d loaded to"
+              " F_lim), %d particles, I_G %.3f near the tip, %.3f far"
+              % (row["label"], row["q_c_MPa"], row["q_c_sd_MPa"], row["f_s_kPa"], a.plateau, row["depth_Dc"],
+                 row["events"], row["events_loaded"], row["particles"], row["I_G_near"], row["I_G_far"]))
+
+
+if __name__ == "__main__":
+    main()

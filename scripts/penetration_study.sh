@@ -1,0 +1,85 @@
+#!/usr/bin/env bash
+# The penetration study of doc/penetration.md: cone penetration tests (examples/penetration/in.cone)
+# in chambers prepared by in.chamber, one per case, each timed, then post/penetration.py's plateau
+# q_c, sleeve friction and gradings gathered in OUT_DIR/study.csv.
+#   bash scripts/penetration_study.sh [OUT_DIR (default runs/penetration)] [cases...]
+# A case is NAME (one of the table below) or a spec density:N:crushing:v:width:ranks[:distribution
+# [:sigma_v]] (the strength distribution of in.grains, default normal_clipped_originals; the vertical
+# stress, Pa, default 1e5). Default: every named case. Chambers are prepared once per (density, N,
+# width, sigma_v) in OUT_DIR/chambers and copied.
+# Environment: LIGGGHTS (build/liggghts).
+# Writes OUT_DIR/<case>/ (the test's outputs, screen.txt, log.liggghts, the figures of
+# post/penetration.py), OUT_DIR/chambers/ and OUT_DIR/study.csv (one row a case: settings, grains,
+# particles and events at the end, steps, wall-clock seconds of the test alone, q_c and f_s over
+# 4 - 8 D_c with their spread, I_G near the tip and far from it).
+set -euo pipefail
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+out=$(mkdir -p "${1:-$here/runs/penetration}" && cd "${1:-$here/runs/penetration}" && pwd)
+shift || true
+liggghts=${LIGGGHTS:-$here/build/liggghts}
+source "$here/scripts/mpi_env.sh"
+declare -A spec=(
+  [dense_region]=dense:60:region:2:10:2     # the default scene: crushing near the tip
+  [dense_off]=dense:60:0:2:10:2             # its uncrushable reference
+  [loose_region]=loose:60:region:2:10:2
+  [loose_off]=loose:60:0:2:10:2
+  [N80_region]=dense:80:region:2:10:2       # coarser grains: D_c / d50 = 2.1
+  [N80_off]=dense:80:0:2:10:2
+  [N80_everywhere]=dense:80:1:2:10:2        # crushing everywhere, against the zone
+  [N80_v1]=dense:80:region:1:10:2           # half the velocity
+  [N80_v4]=dense:80:region:4:10:2           # twice the velocity
+  [N80_w15]=dense:80:region:2:15:2          # a chamber 15 D_c wide
+  [N80_off_np1]=dense:80:0:2:10:1           # one rank, for the speed-up
+  [N80_region_np1]=dense:80:region:2:10:1
+  [dense_region_normal]=dense:60:region:2:10:2:normal     # strengths without the zero draws
+  [dense_region_1MPa]=dense:60:region:2:10:2:normal_clipped_originals:1e6
+  [dense_off_1MPa]=dense:60:0:2:10:2:normal_clipped_originals:1e6
+)
+order="dense_region dense_off loose_region loose_off N80_region N80_off N80_everywhere N80_v1 N80_v4 N80_w15"
+order="$order N80_off_np1 N80_region_np1 dense_region_normal dense_region_1MPa dense_off_1MPa"
+cases=${*:-$order}
+[ -f "$out/study.csv" ] || echo "case,density,N,D_c_over_d50,crushing,v,width,ranks,distribution,sigma_v,grains,particles,events,events_loaded,steps,seconds,q_c_MPa,q_c_sd_MPa,f_s_kPa,I_G_near,I_G_far" > "$out/study.csv"
+for name in $cases; do
+  s=${spec[$name]:-$name}
+  IFS=: read -r density N crushing v width ranks distribution sigma_v <<< "$s"
+  distribution=${distribution:-normal_clipped_originals} sigma_v=${sigma_v:-1e5}
+  [ -n "${ranks:-}" ] || { echo "unknown case $name (named: $order; or density:N:crushing:v:width:ranks)" >&2; exit 2; }
+  chamber=$out/chambers/${density}_N${N}_w${width}_s${sigma_v}
+  if [ ! -f "$chamber/chamber_${density}_N${N}.restart" ]; then
+    rm -rf "$chamber" && mkdir -p "$chamber/penetration" && cp -r "$here/examples/fontainebleau" "$chamber/"
+    cp "$here"/examples/penetration/in.* "$here"/examples/penetration/*.py "$chamber/penetration/"
+    echo "== chamber $density N = $N, width $width D_c, sigma_v $sigma_v Pa"
+    start=$(date +%s%N)
+    (cd "$chamber/penetration" && mpirun -np 2 "$liggghts" -in in.chamber -var density "$density" -var N "$N" \
+       -var width "$width" -var sigma_v "$sigma_v" -log log.liggghts > screen.txt 2>&1) || { tail -n 5 "$chamber/penetration/screen.txt" >&2; exit 1; }
+    awk -v a="$start" -v b="$(date +%s%N)" 'BEGIN {printf "   prepared in %.1f s\n", (b - a) / 1e9}'
+    grep '^CHAMBER .* N = ' "$chamber/penetration/screen.txt"
+  fi
+  dir=$out/$name
+  rm -rf "$dir" && mkdir -p "$dir/penetration" && cp -r "$here/examples/fontainebleau" "$dir/"
+  cp "$here"/examples/penetration/in.* "$here"/examples/penetration/*.py "$chamber"/penetration/chamber_* "$dir/penetration/"
+  vars=(-var density "$density" -var N "$N" -var crushing "$crushing" -var v "$v" -var width "$width"
+        -var distribution "$distribution" -var sigma_v "$sigma_v" -var label "$name")
+  echo "== $name: mpirun -np $ranks liggghts -in in.cone ${vars[*]}"
+  start=$(date +%s%N)
+  (cd "$dir/penetration" && mpirun -np "$ranks" "$liggghts" -in in.cone "${vars[@]}" -log log.liggghts > screen.txt 2>&1) \
+    || { tail -n 5 "$dir/penetration/screen.txt" >&2; echo "$name failed: $dir/penetration/screen.txt" >&2; exit 1; }
+  seconds=$(awk -v a="$start" -v b="$(date +%s%N)" 'BEGIN {printf "%.1f", (b - a) / 1e9}')
+  grep -E '^(PENETRATED|CHECKED)' "$dir/penetration/screen.txt"
+  summary=$(cd "$dir/penetration" && "$here/post/penetration.py" --N "$N" --Dc 0.0357 --out "$name" "$name")
+  echo "$summary"
+  history=$dir/penetration/penetration_${name}_N${N}.csv
+  python3 - "$history" "$dir/penetration/penetration_${name}_summary.csv" "$dir/penetration/chamber_${density}_N${N}.in" \
+    "$dir/penetration/screen.txt" <<EOF >> "$out/study.csv"
+import csv, re, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+summary = next(csv.DictReader(open(sys.argv[2])))
+grains = int(float(open(sys.argv[3]).read().split("grains0 equal")[1].split()[0]))
+steps = int(float(re.search(r"CHECKED STEPS \\S+ OF (\\S+)", open(sys.argv[4]).read()).group(1)))
+print("$name,$density,$N,%.3f,$crushing,$v,$width,$ranks,$distribution,$sigma_v,%d,%d,%d,%s,%d,$seconds,%s,%s,%s,%s,%s" % (
+    0.0357 / (0.21e-3 * $N), grains, int(float(rows[-1]["particles"])), int(float(rows[-1]["events"])),
+    summary["events_loaded"], steps,
+    summary["q_c_MPa"], summary["q_c_sd_MPa"], summary["f_s_kPa"], summary["I_G_near"], summary["I_G_far"]))
+EOF
+  tail -n 1 "$out/study.csv"
+done
