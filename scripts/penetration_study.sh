@@ -4,9 +4,13 @@
 # q_c, sleeve friction and gradings gathered in OUT_DIR/study.csv.
 #   bash scripts/penetration_study.sh [OUT_DIR (default runs/penetration)] [cases...]
 # A case is NAME (one of the table below) or a spec density:N:crushing:v:width:ranks[:distribution
-# [:sigma_v]] (the strength distribution of in.grains, default normal_clipped_originals; the vertical
-# stress, Pa, default 1e5). Default: every named case. Chambers are prepared once per (density, N,
-# width, sigma_v) in OUT_DIR/chambers and copied.
+# [:sigma_v[:seed]]] (the strength distribution of in.grains, default normal_clipped_originals; the
+# vertical stress, Pa, default 1e5; the seed of the chamber's grains and of their strengths, default
+# the decks' 15485863). Default: every named case. Chambers are prepared once per (density, N, width,
+# sigma_v, seed) in OUT_DIR/chambers and copied.
+# The case "figures" draws doc/penetration.md's figures from the cases already run
+# (OUT_DIR/figures: q_c, events and gradings of dense_region, dense_off, loose_region, loose_off; the
+# events of dense_region_1MPa and of N80_region, N80_everywhere).
 # Environment: LIGGGHTS (build/liggghts).
 # Writes OUT_DIR/<case>/ (the test's outputs, screen.txt, log.liggghts, the figures of
 # post/penetration.py), OUT_DIR/chambers/ and OUT_DIR/study.csv (one row a case: settings, grains,
@@ -34,24 +38,42 @@ declare -A spec=(
   [dense_region_normal]=dense:60:region:2:10:2:normal     # strengths without the zero draws
   [dense_region_1MPa]=dense:60:region:2:10:2:normal_clipped_originals:1e6
   [dense_off_1MPa]=dense:60:0:2:10:2:normal_clipped_originals:1e6
+  [N80_region_s2]=dense:80:region:2:10:2:normal_clipped_originals:1e5:179424673   # other seeds: the scatter
+  [N80_region_s3]=dense:80:region:2:10:2:normal_clipped_originals:1e5:373587883
+  [N80_off_s2]=dense:80:0:2:10:2:normal_clipped_originals:1e5:179424673
+  [N80_off_s3]=dense:80:0:2:10:2:normal_clipped_originals:1e5:373587883
 )
 order="dense_region dense_off loose_region loose_off N80_region N80_off N80_everywhere N80_v1 N80_v4 N80_w15"
 order="$order N80_off_np1 N80_region_np1 dense_region_normal dense_region_1MPa dense_off_1MPa"
+order="$order N80_region_s2 N80_region_s3 N80_off_s2 N80_off_s3"
 cases=${*:-$order}
-[ -f "$out/study.csv" ] || echo "case,density,N,D_c_over_d50,crushing,v,width,ranks,distribution,sigma_v,grains,particles,events,events_loaded,steps,seconds,q_c_MPa,q_c_sd_MPa,f_s_kPa,I_G_near,I_G_far" > "$out/study.csv"
+[ -f "$out/study.csv" ] || echo "case,density,N,D_c_over_d50,crushing,v,width,ranks,distribution,sigma_v,seed,grains,particles,events,events_loaded,steps,seconds,q_c_MPa,q_c_sd_MPa,f_s_kPa,I_G_near,I_G_far" > "$out/study.csv"
+# OUT_DIR/figures/<N>/: the named cases' files together, drawn by post/penetration.py
+draw() {
+  local n=$1 tag=$2; shift 2
+  mkdir -p "$out/figures/$tag"
+  for c in "$@"; do cp "$out/$c"/penetration/{penetration_,particles_}"${c}"_N"$n".* "$out/$c"/penetration/events_pen_*.csv "$out/figures/$tag/" 2>/dev/null || true; done
+  (cd "$out/figures/$tag" && "$here/post/penetration.py" --N "$n" --Dc 0.0357 --out "$tag" "$@")
+}
 for name in $cases; do
+  if [ "$name" = figures ]; then
+    draw 60 N60 dense_region dense_off loose_region loose_off
+    draw 60 N60_1MPa dense_region_1MPa dense_off_1MPa
+    draw 80 N80 N80_region N80_everywhere N80_off
+    continue
+  fi
   s=${spec[$name]:-$name}
-  IFS=: read -r density N crushing v width ranks distribution sigma_v <<< "$s"
-  distribution=${distribution:-normal_clipped_originals} sigma_v=${sigma_v:-1e5}
+  IFS=: read -r density N crushing v width ranks distribution sigma_v seed <<< "$s"
+  distribution=${distribution:-normal_clipped_originals} sigma_v=${sigma_v:-1e5} seed=${seed:-15485863}
   [ -n "${ranks:-}" ] || { echo "unknown case $name (named: $order; or density:N:crushing:v:width:ranks)" >&2; exit 2; }
-  chamber=$out/chambers/${density}_N${N}_w${width}_s${sigma_v}
-  if [ ! -f "$chamber/chamber_${density}_N${N}.restart" ]; then
+  chamber=$out/chambers/${density}_N${N}_w${width}_s${sigma_v}_seed${seed}
+  if [ ! -f "$chamber/penetration/chamber_${density}_N${N}.restart" ]; then
     rm -rf "$chamber" && mkdir -p "$chamber/penetration" && cp -r "$here/examples/fontainebleau" "$chamber/"
     cp "$here"/examples/penetration/in.* "$here"/examples/penetration/*.py "$chamber/penetration/"
     echo "== chamber $density N = $N, width $width D_c, sigma_v $sigma_v Pa"
     start=$(date +%s%N)
     (cd "$chamber/penetration" && mpirun -np 2 "$liggghts" -in in.chamber -var density "$density" -var N "$N" \
-       -var width "$width" -var sigma_v "$sigma_v" -log log.liggghts > screen.txt 2>&1) || { tail -n 5 "$chamber/penetration/screen.txt" >&2; exit 1; }
+       -var width "$width" -var sigma_v "$sigma_v" -var seed "$seed" -log log.liggghts > screen.txt 2>&1) || { tail -n 5 "$chamber/penetration/screen.txt" >&2; exit 1; }
     awk -v a="$start" -v b="$(date +%s%N)" 'BEGIN {printf "   prepared in %.1f s\n", (b - a) / 1e9}'
     grep '^CHAMBER .* N = ' "$chamber/penetration/screen.txt"
   fi
@@ -59,7 +81,7 @@ for name in $cases; do
   rm -rf "$dir" && mkdir -p "$dir/penetration" && cp -r "$here/examples/fontainebleau" "$dir/"
   cp "$here"/examples/penetration/in.* "$here"/examples/penetration/*.py "$chamber"/penetration/chamber_* "$dir/penetration/"
   vars=(-var density "$density" -var N "$N" -var crushing "$crushing" -var v "$v" -var width "$width"
-        -var distribution "$distribution" -var sigma_v "$sigma_v" -var label "$name")
+        -var distribution "$distribution" -var sigma_v "$sigma_v" -var seed "$seed" -var label "$name")
   echo "== $name: mpirun -np $ranks liggghts -in in.cone ${vars[*]}"
   start=$(date +%s%N)
   (cd "$dir/penetration" && mpirun -np "$ranks" "$liggghts" -in in.cone "${vars[@]}" -log log.liggghts > screen.txt 2>&1) \
@@ -76,7 +98,7 @@ rows = list(csv.DictReader(open(sys.argv[1])))
 summary = next(csv.DictReader(open(sys.argv[2])))
 grains = int(float(open(sys.argv[3]).read().split("grains0 equal")[1].split()[0]))
 steps = int(float(re.search(r"CHECKED STEPS \\S+ OF (\\S+)", open(sys.argv[4]).read()).group(1)))
-print("$name,$density,$N,%.3f,$crushing,$v,$width,$ranks,$distribution,$sigma_v,%d,%d,%d,%s,%d,$seconds,%s,%s,%s,%s,%s" % (
+print("$name,$density,$N,%.3f,$crushing,$v,$width,$ranks,$distribution,$sigma_v,$seed,%d,%d,%d,%s,%d,$seconds,%s,%s,%s,%s,%s" % (
     0.0357 / (0.21e-3 * $N), grains, int(float(rows[-1]["particles"])), int(float(rows[-1]["events"])),
     summary["events_loaded"], steps,
     summary["q_c_MPa"], summary["q_c_sd_MPa"], summary["f_s_kPa"], summary["I_G_near"], summary["I_G_far"]))

@@ -245,9 +245,9 @@ def read_rows_text(path):
 def case_cone_adaptive(liggghts, work, ranks):
     """fix crush 'every adaptive' in the scene (crushing everywhere: the burst of the grains without
     strength at the start, then the grains the cone loads): the same events at the same steps, with
-    the same fragment tags, as 'every 1', on 1 and 2 ranks. (It checks every step here: the cone
-    moves further each step than the bound allows the grains at their limit under it, and an unloaded
-    grain of zero strength allows no step; doc/penetration.md.)"""
+    the same fragment tags, as 'every 1', on 1 and 2 ranks. (It checks every step here, as an
+    unloaded grain of zero strength allows no step, and it did with the truncated normal too; the
+    test is of exactness.)"""
     ranks = int(ranks)
     folder = prepare_chamber(liggghts, work, ranks)
     logs = {}
