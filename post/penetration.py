@@ -53,14 +53,13 @@ def read_dump(path):
 
 def tip_at(history, step):
     """z of the tip at a step, interpolated in the history (tip_z column)."""
-    rows = history
-    if step <= rows[0]["step"]:
-        return rows[0]["tip_z"]
-    for a, b in zip(rows, rows[1:]):
+    if step <= history[0]["step"]:
+        return history[0]["tip_z"]
+    for a, b in zip(history, history[1:]):
         if a["step"] <= step <= b["step"]:
             w = (step - a["step"]) / (b["step"] - a["step"])
             return a["tip_z"] + w * (b["tip_z"] - a["tip_z"])
-    return rows[-1]["tip_z"]
+    return history[-1]["tip_z"]
 
 
 def kept_fraction(events, atoms):

@@ -6,6 +6,7 @@ in.cone: 3 D_c of penetration into some 700 grains, D_c / d50 = 2.1), with post/
 their outputs.
 
   python3 test_penetration.py LIGGGHTS WORKDIR CASE"""
+import csv
 import math
 import os
 import shutil
@@ -17,6 +18,7 @@ from liggghts_run import check, each_rank_count, printed, read_thermo, run_deck,
 from liggghts_run import main as test_main  # noqa: E402
 from liggghts_run import read_dump  # noqa: E402
 from test_checkpoint import kill_after  # noqa: E402
+from test_vtk import has_vtk_dumps  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 SCRIPT = os.path.join(ROOT, "examples", "penetration", "penetrometer.py")
@@ -159,10 +161,11 @@ def push(liggghts, folder, ranks, **variables):
     return run_deck(liggghts, os.path.join(EXAMPLES, "penetration", "in.cone"), folder, settings, ranks=ranks, keep=True)
 
 
-def read_rows(path):
-    import csv
+def read_rows(path, numeric=True):
+    """The rows of a CSV file as dicts, their values as floats unless numeric=False."""
     with open(path) as f:
-        return [dict((k, float(v)) for k, v in row.items()) for row in csv.DictReader(f)]
+        rows = list(csv.DictReader(f))
+    return [dict((k, float(v)) for k, v in row.items()) for row in rows] if numeric else rows
 
 
 def tip_at(history, step):
@@ -206,7 +209,7 @@ def case_cone_short(liggghts, work, ranks):
     inside = [math.hypot(e["x"], e["y"]) <= 1.5 * DC + tolerance
               and -1.5 * DC - tolerance <= e["z"] - tip_at(history, e["step"]) <= 1.0 * DC + tolerance for e in events]
     check(all(inside), "every event inside the zone around the tip at its step")
-    if "custom/vtk" in subprocess.run([liggghts, "-h"], stdout=subprocess.PIPE, universal_newlines=True).stdout:
+    if has_vtk_dumps(liggghts):
         try:
             import vtk
         except ImportError:
@@ -229,16 +232,10 @@ def case_cone_short(liggghts, work, ranks):
                            "dense_region"], cwd=folder, stdout=subprocess.PIPE, universal_newlines=True, check=True).stdout
     check(all(os.path.exists(os.path.join(folder, f)) for f in ("penetration_test.png", "events_test.png", "gsd_test.png")),
           "post/penetration.py drew q_c, the events and the gradings")
-    summary = read_rows_text(os.path.join(folder, "penetration_test_summary.csv"))
+    summary = read_rows(os.path.join(folder, "penetration_test_summary.csv"), numeric=False)
     check(float(summary[0]["q_c_MPa"]) > 0 and float(summary[0]["I_G_near"]) > float(summary[0]["I_G_far"]),
           "summary: q_c %.3g MPa over the plateau; I_G %.3f near the tip above %.3f far from it (%s)"
           % (float(summary[0]["q_c_MPa"]), float(summary[0]["I_G_near"]), float(summary[0]["I_G_far"]), plot.strip()))
-
-
-def read_rows_text(path):
-    import csv
-    with open(path) as f:
-        return list(csv.DictReader(f))
 
 
 @variants(*each_rank_count(1, 2))
