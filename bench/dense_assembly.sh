@@ -5,15 +5,19 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cp "$here"/in.dense_assembly "$here"/in.none "$here"/in.crush_idle "$here"/in.crush_all "$work"/
 
-# dense_run MODEL TMODEL EXTRA STEPS: one run; its screen output is in $work/screen.txt.
+# dense_run MODEL TMODEL EXTRA STEPS [VAR VALUE ...]: one run (with further -var pairs); its screen
+# output is in $work/screen.txt.
 dense_run() {
-  (cd "$work" && "$liggghts" -in in.dense_assembly -var model "$1" -var tmodel "$2" -var extra "$3" \
-     -var steps "$4" -log none -screen screen.txt >/dev/null 2>&1 || { tail -5 screen.txt; exit 1; })
+  local vars=(-var model "$1" -var tmodel "$2" -var extra "$3" -var steps "$4")
+  shift 4
+  while [ $# -ge 2 ]; do vars+=(-var "$1" "$2"); shift 2; done
+  (cd "$work" && "$liggghts" -in in.dense_assembly "${vars[@]}" -log none -screen screen.txt >/dev/null 2>&1 \
+     || { tail -5 screen.txt; exit 1; })
 }
 
-# loop_time MODEL TMODEL EXTRA: seconds of the run loop of $steps steps.
+# loop_time MODEL TMODEL EXTRA [VAR VALUE ...]: seconds of the run loop of $steps steps.
 loop_time() {
-  dense_run "$1" "$2" "$3" "$steps"
+  dense_run "$1" "$2" "$3" "$steps" "${@:4}"
   awk '/^Loop time of/ {print $4}' "$work/screen.txt"
 }
 

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <functional>
 #include <limits>
 #include <string>
 
@@ -31,6 +32,7 @@
 #include "modify.h"
 #include "neighbor.h"
 #include "pair_gran.h"
+#include "fix_wall_gran.h"
 #include "update.h"
 #include "hertz_mindlin_scaled_law.h"
 
@@ -103,6 +105,7 @@ FixCrush::FixCrush(LAMMPS *lmp, int narg, char **arg) :
   irregular_ = new Irregular(lmp);
   memory->create(limit_factor_, atom->ntypes + 1, atom->ntypes + 1, "crush:limit_factor");
   recorder_.limit_factor = limit_factor_;
+  recorder_.total_force = settings_.total_force;
   ContactLoadMonitor::attach(lmp, &recorder_);
 
 }
@@ -174,7 +177,8 @@ void FixCrush::init()
 {
   if (force->newton_pair)
     error->all(FLERR, "fix crush needs 'newton off': each particle must see all of its contacts");
-  check_pair_style();
+  check_contact_models();
+  check_materials();
   check_particles();
   setup_limit_factors();
   if (!log_opened_) open_log();
@@ -241,12 +245,56 @@ void FixCrush::check_particles() const
   MPI_Barrier(world);  // the owner stops the run
 }
 
-void FixCrush::check_pair_style() const
+// Every granular contact, pair or wall, feeds the check through LIGGGHTS' contact-model template
+// (patches/0009), whatever its models: the pair style must be granular, and the normal models must
+// have what the chosen force and 'every adaptive' read.
+void FixCrush::check_contact_models()
 {
   PairGran *pair = static_cast<PairGran *>(force->pair_match("gran", 0));
-  if (!pair || !pair->contact_match("normal", "hertz/scaled"))
-    error->all(FLERR, "fix crush needs 'pair_style gran model hertz/scaled ...': that contact model "
-                      "supplies the contact forces F_n / F_lim of the breakage check");
+  if (!pair)
+    error->fix_error(FLERR, this, "needs a granular pair style ('pair_style gran model ...'): its contacts "
+                                  "supply the normal forces of the breakage check");
+  check_normal_model("pair_style gran", [pair](const char *m) { return pair->contact_match("normal", m); });
+  for (int k = 0; k < modify->nfix; k++)
+    if (strcmp(modify->fix[k]->style, "wall/gran") == 0) {
+      FixWallGran *wall = static_cast<FixWallGran *>(modify->fix[k]);
+      check_normal_model("fix " + std::string(wall->id) + " wall/gran",
+                         [wall](const char *m) { return wall->contact_match("normal", m); });
+    }
+}
+
+// One pair style or wall: is(name) says whether its normal model is that one.
+void FixCrush::check_normal_model(const std::string &who, const std::function<bool(const char *)> &is)
+{
+  // k_n U is the elastic force of these (the secant stiffness); the others are elasto-plastic or
+  // keep no stiffness, and only their total F_n means something.
+  static const char *const elastic[] = {"hertz/scaled", "hertz", "hertz/stiffness", "hooke", "hooke/stiffness"};
+  static const char *const others[] = {"hooke/hysteresis", "luding", "edinburgh", "edinburgh/stiffness", "thornton_ning"};
+  std::string model = "a custom one";
+  for (const char *m : others)
+    if (is(m)) model = m;
+  bool has_elastic = false;
+  for (const char *m : elastic)
+    if (is(m)) has_elastic = true, model = m;
+  if (settings_.adaptive && !is("hertz/scaled"))
+    error->fix_error(FLERR, this, ("keyword 'every adaptive' bounds the growth of Hertzian contact forces (eq. 8, "
+                                   "model hertz/scaled), but " + who + " uses model " + model +
+                                   ": use 'every 1' or 'every N'").c_str());
+  if (!settings_.total_force && !has_elastic)
+    error->fix_error(FLERR, this, ("keyword 'force elastic' (the default) reads k_n U, which is not the elastic "
+                                   "force of " + who + "'s model " + model + " (elasto-plastic, or without "
+                                   "k_n): add 'force total' (its normal force with damping)").c_str());
+}
+
+// E' of eq. 4 needs each type's elastic constants, whatever the contact law: a deck of hooke/stiffness
+// may not define them.
+void FixCrush::check_materials()
+{
+  for (const char *name : {"youngsModulus", "poissonsRatio"})
+    if (!modify->find_fix_property(name, "property/global", "peratomtype", 0, 0, style, false))
+      error->fix_error(FLERR, this, (std::string("the breakage check (eq. 5) needs the grains' Hertzian contact "
+                                                 "area, from E and nu of every type: define 'fix ID all "
+                                                 "property/global ") + name + " peratomtype ...'").c_str());
 }
 
 // (4 E'/3)^2 per type pair, E' of eq. 4 from the types' youngsModulus and poissonsRatio:

@@ -20,6 +20,7 @@ FixStyle(crush,FixCrush)
 #define LMP_FIX_CRUSH_H
 
 #include <cstdio>
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -65,7 +66,9 @@ class FixCrush : public Fix {
     double diameter, ratio, x[3];
   };
 
-  void check_pair_style() const;
+  void check_contact_models();
+  void check_normal_model(const std::string &who, const std::function<bool(const char *)> &is);
+  void check_materials();
   void setup_limit_factors();
   void refresh_recorder();
   void record_on_check_steps();

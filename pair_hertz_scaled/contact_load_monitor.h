@@ -1,10 +1,12 @@
 /* ----------------------------------------------------------------------
    liggghts-crush: how the contact models publish each contact's load (hertz_mindlin_contact_load.h).
 
-   Fix crush owns a ContactLoadRecorder and attaches it (contact_monitor.h); the hertz/scaled normal
-   model and fix wall/servo record each contact's load on the particle and on its partner ball
-   (F_n / F_lim of eq. 5/7/10 once divided by the consumer's strength term). Fix crush with 'every' > 1
-   attaches it for checked steps only.
+   Fix crush owns a ContactLoadRecorder and attaches it (contact_monitor.h). Every LIGGGHTS contact
+   model, pair and wall, records through the hook that patches/0009 adds to LIGGGHTS' contact-model
+   template (ContactModelBase::recordContactLoad, after the normal and cohesion models), and fix
+   wall/servo records its own walls: the load on the particle and on its partner ball (F_n / F_lim of
+   eq. 5/7/10 once divided by the consumer's strength term). Fix crush with 'every' > 1 attaches it
+   for checked steps only.
 ------------------------------------------------------------------------- */
 #ifndef LMP_CONTACT_LOAD_MONITOR_H
 #define LMP_CONTACT_LOAD_MONITOR_H
@@ -21,7 +23,19 @@ namespace LAMMPS_NS {
 // largest F_n / F_lim of eq. 5: the strength, a per-particle factor, stays out of the per-contact work.
 class ContactLoadRecorder {
  public:
-  ContactLoadRecorder() : load(0), limit_factor(0) {}
+  ContactLoadRecorder() : load(0), limit_factor(0), total_force(false) {}
+
+  // One contact as LIGGGHTS' contact models leave it (SurfacesIntersectData after the normal and
+  // cohesion models). The elastic force is k_n U: the secant stiffness times the overlap, exact for
+  // hooke, hertz, their /stiffness forms and hertz/scaled (fix crush refuses it for the plastic
+  // models, whose k_n U overstates the unloading force); 'force total' reads F_n with viscous damping
+  // and with the cohesion that LIGGGHTS' cohesion models add to it. r' from the radii (a wall: r_i).
+  template <class ContactData>
+  inline void record(const ContactData &c) const
+  {
+    const double effective_radius = c.is_wall ? c.radi : c.radi * c.radj / (c.radi + c.radj);
+    record(c.i, c.j, c.is_wall, c.itype, c.jtype, total_force ? c.Fn : c.kn * c.deltan, effective_radius);
+  }
 
   // limit_factor[itype][jtype] = (4 E'/3)^2 (Pa^2); F_n the elastic normal force (N); r' the
   // contact's effective radius (m), r_i r_j/(r_i + r_j) (a plane: r_i), which the contact model has
@@ -39,6 +53,7 @@ class ContactLoadRecorder {
 
   double *load;              // per local and ghost atom (Pa^3); fix crush reads the local ones
   double **limit_factor;
+  bool total_force;          // fix crush's 'force total': F_n with damping and cohesion, not k_n U
 };
 
 // The crush fix's recorder, if one is attached (contact_monitor.h).

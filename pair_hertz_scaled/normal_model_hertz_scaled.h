@@ -7,9 +7,10 @@
    Elastic by default (quasi-static runs use fix damp/local); 'viscous_damping on' adds LIGGGHTS'
    restitution-based normal damping for dynamic scenes. Walls: a plane is a sphere of infinite radius
    of the wall type's material (D1 D2/(D1+D2) -> D1). The formulas live in hertz_mindlin_scaled_law.h.
-   When a fix crush is defined, each contact also feeds the crush fix's breakage monitor; when fix
-   dt/stiffness is about to update the time step, each particle-particle contact adds its stiffness
-   to the fix's sums (contact_stiffness_monitor.h).
+   Fix crush reads each contact's elastic force k_N U through the hook of LIGGGHTS' contact-model
+   template (patches/0009), as for every model; when fix dt/stiffness is about to update the time
+   step, each particle-particle contact adds its stiffness to the fix's sums
+   (contact_stiffness_monitor.h).
 ------------------------------------------------------------------------- */
 #ifdef NORMAL_MODEL
 NORMAL_MODEL(HERTZ_SCALED,hertz/scaled,5)
@@ -24,7 +25,6 @@ NORMAL_MODEL(HERTZ_SCALED,hertz/scaled,5)
 #include "error.h"
 #include "lammps.h"
 #include "crush_model_error.h"
-#include "contact_load_monitor.h"
 #include "contact_stiffness_monitor.h"
 #include "global_properties.h"
 #include "hertz_mindlin_scaled_law.h"
@@ -76,7 +76,7 @@ namespace ContactModels {
   public:
     NormalModel(LAMMPS *lmp, IContactHistorySetup *hsetup, class ContactModelBase *c) :
       NormalModelBase(lmp, hsetup, c), normal_coeff(NULL), shear_coeff(NULL),
-      betaeff(NULL), viscous_damping(false), monitor(lmp), stiffness_monitor(lmp)
+      betaeff(NULL), viscous_damping(false), stiffness_monitor(lmp)
     {
     }
 
@@ -123,9 +123,6 @@ namespace ContactModels {
       sidata.kn = kn;
       sidata.kt = k.shear;
 
-      // Breakage check against the elastic (Hertzian) force, whose contact area eq. 5 assumes.
-      if (const ContactLoadRecorder *recorder = monitor.recorder())
-        recorder->record(sidata.i, sidata.j, sidata.is_wall, itype, jtype, Fn_elastic, 0.5 * diameter_term);
       // The time step's stiffness sums; not from walls (fix dt/stiffness counts only fix wall/servo's)
       // nor from passes that compute no forces (compute pair/gran/local).
       if (const ContactStiffnessRecorder *sums = stiffness_monitor.recorder())
@@ -155,7 +152,6 @@ namespace ContactModels {
     double **shear_coeff;
     double **betaeff;
     bool viscous_damping;
-    ContactLoadMonitor monitor;
     ContactStiffnessMonitor stiffness_monitor;
   };
 

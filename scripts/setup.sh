@@ -112,4 +112,4 @@ RANKS=$ranks LIGGGHTS=$build_dir/liggghts bash "$here/scripts/fontainebleau_runs
 seconds=$(tail -n 1 "$build_dir/run/runtimes.csv" | cut -d, -f6)
 /usr/bin/python3 "$here/post/summary.py" "$build_dir/run/O2" --figures "$build_dir/run/figures" \
   --seconds "$seconds" --ranks "$ranks"
-say "done: every deck, its variables and the paper's other tests are in README.md"
+say "done: every deck, its variables and the paper's other tests are in doc/running.md"

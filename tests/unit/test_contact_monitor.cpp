@@ -69,3 +69,35 @@ TEST(ContactStiffnessRecorder, SumsBothPartnersAsTheWalkDid)
   EXPECT_DOUBLE_EQ(sums[0].translational, 1.5 * kN + kS + 1.5 * kN2 + kS2);
   EXPECT_DOUBLE_EQ(sums[0].shear, kS + kS2);
 }
+
+namespace {
+// The fields of LIGGGHTS' SurfacesIntersectData that the recorder reads.
+struct Contact {
+  int i, j, itype, jtype;
+  bool is_wall;
+  double radi, radj, kn, deltan, Fn;
+};
+}  // namespace
+
+TEST(ContactLoadRecorder, ReadsAnyModelsContactThroughItsStiffnessOrItsTotalForce)
+{
+  LAMMPS_NS::ContactLoadRecorder recorder;
+  std::vector<double> load(3, 0.0);
+  std::vector<double> row(2, 4.0);  // (4E'/3)^2 = 4 Pa^2 for type 1 with 1
+  std::vector<double *> factor = {row.data(), row.data()};
+  recorder.load = load.data();
+  recorder.limit_factor = factor.data();
+  // a pair contact: r' = 2*3/(2+3) = 1.2, elastic force k_n U = 10 * 0.5 = 5 (total F_n 7: damping)
+  const Contact pair = {0, 1, 1, 1, false, 2.0, 3.0, 10.0, 0.5, 7.0};
+  recorder.record(pair);
+  EXPECT_DOUBLE_EQ(load[0], 5.0 * 4.0 / (1.2 * 1.2));
+  EXPECT_DOUBLE_EQ(load[1], load[0]);
+  recorder.total_force = true;
+  recorder.record(pair);
+  EXPECT_DOUBLE_EQ(load[0], 7.0 * 4.0 / (1.2 * 1.2));
+  // a wall: r' = r_i, the partner index is not written; a smaller load leaves the largest in place
+  const Contact wall = {2, 0, 1, 1, true, 2.0, 0.0, 1.0, 0.5, 0.5};
+  recorder.record(wall);
+  EXPECT_DOUBLE_EQ(load[2], 0.5 * 4.0 / (2.0 * 2.0));
+  EXPECT_DOUBLE_EQ(load[0], 7.0 * 4.0 / (1.2 * 1.2));
+}
