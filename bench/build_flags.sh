@@ -23,30 +23,14 @@ candidates=("$@")
   "o3:-O3 -DNDEBUG -fstrict-aliasing"
   "o2_nomatherrno:-O2 -DNDEBUG -fno-math-errno"
   "o2_native:-O2 -DNDEBUG -march=native")
-mapfile -t hot < <(grep -E '^[a-z_]+$' "$here/../cmake/hot_path_units.txt")
 [ -x /usr/bin/liggghts ] || { echo "build_flags: needs Debian's liggghts (apt-get install liggghts)" >&2; exit 1; }
 
 out=$build/flags
 mkdir -p "$out"
-link=$(cat "$build/CMakeFiles/liggghts.dir/link.txt")
+source "$here/hot_variant.sh"
 
 # variant NAME FLAGS: the hot units compiled with FLAGS, linked as $out/NAME/liggghts.
-variant() {
-  local name=$1 flags=$2 cmd=$link
-  mkdir -p "$out/$name"
-  for unit in "${hot[@]}"; do
-    local object target
-    object=$(cd "$build" && ls CMakeFiles/*/liggghts-3.8.0/src/$unit.cpp.o | head -n 1)
-    target=${object%%/liggghts-3.8.0/*}
-    local defines includes
-    defines=$(sed -n 's/^CXX_DEFINES = //p' "$build/$target/flags.make")
-    includes=$(sed -n 's/^CXX_INCLUDES = //p' "$build/$target/flags.make")
-    (cd "$build" && eval c++ $defines $includes $flags -std=c++14 -w \
-       -c liggghts-3.8.0/src/$unit.cpp -o "$out/$name/$unit.o")
-    cmd=${cmd/$object/$out\/$name\/$unit.o}
-  done
-  (cd "$build" && eval "${cmd/-o liggghts/-o $out/$name/liggghts}")
-}
+variant() { hot_variant "$out/$1" "$2"; }
 
 names=(this_build)
 for c in "${candidates[@]}"; do

@@ -30,8 +30,10 @@ class ContactLoadRecorder {
   // hooke, hertz, their /stiffness forms and hertz/scaled (fix crush refuses it for the plastic
   // models, whose k_n U overstates the unloading force); 'force total' reads F_n with viscous damping
   // and with the cohesion that LIGGGHTS' cohesion models add to it. r' from the radii (a wall: r_i).
+  // Out of line: the contact loops keep only the test for a recorder, not this code, between their
+  // registers (instruction counts: doc/own_deck.md).
   template <class ContactData>
-  inline void record(const ContactData &c) const
+  __attribute__((noinline)) void record(const ContactData &c) const
   {
     const double effective_radius = c.is_wall ? c.radi : c.radi * c.radj / (c.radi + c.radj);
     record(c.i, c.j, c.is_wall, c.itype, c.jtype, total_force ? c.Fn : c.kn * c.deltan, effective_radius);

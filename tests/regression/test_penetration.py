@@ -255,17 +255,52 @@ def case_cone_adaptive(liggghts, work, ranks):
     check(events > 0 and logs["adaptive"] == logs["1"], "every adaptive: the same %d events as every 1" % events)
 
 
-def case_cone_resume(liggghts, work):
+@variants(*each_rank_count(2, 3, 4))
+def case_cone_balance(liggghts, work, ranks):
+    """The short penetration with the shift balancer before each stretch (balance, doc/balance.txt)
+    on 2, 3 and 4 ranks (grids 2 x 1 x 1, 3 x 1 x 1, 2 x 2 x 1): the planes move with the fragments
+    and never lose a particle (the books at every row, unique tags), each call leaves the particles
+    at most 2% off even on 2 ranks (two slabs: the whole way in one call) and no fuller than before
+    on 3 and 4."""
+    ranks = int(ranks)
+    folder = prepare_chamber(liggghts, work, ranks)
+    out = push(liggghts, folder, ranks, crushing="region", vtk=0, label="balanced", balance=1)
+    lines = [line for line in out.splitlines() if line.startswith("BALANCE:")]
+    check(len(lines) >= 3, "%d balance calls, one before each stretch" % len(lines))
+    before = [float(line.split()[2]) for line in lines]
+    after = [float(line.split("->")[1].split()[0]) for line in lines]
+    if ranks == 2:
+        check(max(after) <= 1.02, "the fuller processor holds at most 2%% over the mean after each call (%.4f)"
+              % max(after))
+    else:
+        # more than two slabs along x move one hop a call; a 2 x 2 grid cannot even out four quarters
+        check(all(a <= b + 1e-12 for a, b in zip(after, before)) and after[-1] < before[-1] + 1e-12,
+              "no call leaves the fullest processor fuller (%s)" % ", ".join("%.3f->%.3f" % p for p in zip(before, after)))
+    history = read_rows(os.path.join(folder, "penetration_balanced_N80.csv"))
+    n0 = grains0(folder)
+    check(all(r["particles"] == n0 + 13 * r["events"] for r in history) and history[-1]["events"] > 0,
+          "particles = %d + 13 x events at every one of %d rows (%d events)" % (n0, len(history), history[-1]["events"]))
+    _, _, atoms = read_dump(os.path.join(folder, "particles_balanced_N80.liggghts"))[0]
+    tags = [int(a["id"]) for a in atoms]
+    check(len(set(tags)) == len(tags) == history[-1]["particles"], "%d particles, every tag unique" % len(tags))
+
+
+@variants(*each_rank_count(1, 2))
+def case_cone_resume(liggghts, work, ranks):
     """A test killed right after a checkpoint resumes (-var resume 1) to the same history and events
-    as the uninterrupted one: the meshes, their motion and the tip's clock come back."""
-    folder = prepare_chamber(liggghts, work, 1)
-    settings = dict(CHAMBER, v=2, crushing="region", vtk=0, checkpoint_every=10000)
-    run_deck(liggghts, os.path.join(EXAMPLES, "penetration", "in.cone"), folder, dict(settings, label="whole"), keep=True)
+    as the uninterrupted one: the meshes, their motion and the tip's clock come back; on 2 ranks the
+    balancer's planes too (they follow from the positions alone)."""
+    ranks = int(ranks)
+    folder = prepare_chamber(liggghts, work, ranks)
+    settings = dict(CHAMBER, v=2, crushing="region", vtk=0, checkpoint_every=10000, balance=int(ranks > 1))
+    run_deck(liggghts, os.path.join(EXAMPLES, "penetration", "in.cone"), folder, dict(settings, label="whole"),
+             ranks=ranks, keep=True)
     variables = dict(settings, label="killed")
     # in.chamber ends at step 90000, where the test begins: killed after its second checkpoint
-    newest = kill_after(liggghts, folder, 1, variables, 90000 + 20000, 0.3, deck="in.cone", base="ckpt_pen_killed_N80")
+    newest = kill_after(liggghts, folder, ranks, variables, 90000 + 20000, 0.3, deck="in.cone", base="ckpt_pen_killed_N80")
     check(newest is not None and newest >= 110000, "killed after the checkpoint of step %s" % newest)
-    run_deck(liggghts, os.path.join(EXAMPLES, "penetration", "in.cone"), folder, dict(variables, resume=1), keep=True)
+    run_deck(liggghts, os.path.join(EXAMPLES, "penetration", "in.cone"), folder, dict(variables, resume=1),
+             ranks=ranks, keep=True)
     for name in ("penetration_%s_N80.csv", "events_pen_%s_N80.csv"):
         whole = open(os.path.join(folder, name % "whole")).read()
         resumed = open(os.path.join(folder, name % "killed")).read()

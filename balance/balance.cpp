@@ -1,0 +1,169 @@
+/* ----------------------------------------------------------------------
+   liggghts-crush: balance (see balance.h).
+------------------------------------------------------------------------- */
+#include "balance.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+
+#include "atom.h"
+#include "comm.h"
+#include "crush_model_error.h"
+#include "crush_shift_cuts.h"
+#include "domain.h"
+#include "error.h"
+#include "neighbor.h"
+#include "update.h"
+
+using namespace LAMMPS_NS;
+
+namespace {
+
+// A number of the command line; ok says whether it is all of the word, finite and at least 'least'.
+double number(const char *word, double least, bool &ok)
+{
+  char *end = NULL;
+  const double v = strtod(word, &end);
+  ok = end && *end == '\0' && v >= least && v < 1e300;
+  return v;
+}
+
+}  // namespace
+
+Balance::Balance(LAMMPS *lmp) : Pointers(lmp) {}
+
+void Balance::fail(const std::string &what) const
+{
+  error->all(FLERR, ("balance: " + what).c_str());
+}
+
+void Balance::command(int narg, char **arg)
+{
+  if (domain->box_exist == 0) fail("the box must exist first");
+  if (narg != 5 || strcmp(arg[1], "shift") != 0)
+    fail("expected 'balance thresh shift dimstr niter stopthresh' (e.g. 'balance 1.05 shift x 20 1.02')");
+  bool ok = false;
+  const double thresh = number(arg[0], 1.0, ok);
+  if (!ok) fail(std::string("thresh expects a number >= 1 (the largest count over the mean), got '") + arg[0] + "'");
+  const std::string axes = arg[2];
+  for (std::size_t k = 0; k < axes.size(); k++)
+    if (!strchr("xyz", axes[k]) || axes.find(axes[k]) != k || (axes[k] == 'z' && domain->dimension == 2))
+      fail("dimstr expects the axes x, y, z (each once, z in 3d only), got '" + axes + "'");
+  if (axes.empty()) fail("dimstr expects at least one axis");
+  const int halvings = static_cast<int>(number(arg[3], 1.0, ok));
+  if (!ok || halvings > 60 || strchr(arg[3], '.'))
+    fail(std::string("niter expects a whole number in [1, 60] (bisection steps per cut), got '") + arg[3] + "'");
+  const double stop = number(arg[4], 1.0, ok);
+  if (!ok) fail(std::string("stopthresh expects a number >= 1, got '") + arg[4] + "'");
+  if (domain->triclinic) fail("a triclinic box is not supported");
+
+  const double before = crush::imbalance(counts_per_processor());
+  double after = before;
+  std::string moved;
+  if (before > thresh) {
+    for (char axis : axes) {
+      const int dim = axis - 'x';
+      if (comm->procgrid[dim] < 2) continue;
+      shift(dim, halvings);
+      moved += axis;
+      after = crush::imbalance(counts_per_processor());
+      if (after <= stop) break;
+    }
+    if (!moved.empty()) migrate();
+  }
+  report(before, after, moved);
+}
+
+double *Balance::split(int dim) const
+{
+  return dim == 0 ? comm->xsplit : (dim == 1 ? comm->ysplit : comm->zsplit);
+}
+
+// Particles below each cut (a fraction of the box along dim), summed over all processors.
+std::vector<double> Balance::counts_below(int dim, const std::vector<double> &cuts) const
+{
+  std::vector<double> local(cuts.size(), 0.0), all(cuts.size(), 0.0);
+  const double lo = domain->boxlo[dim], length = domain->prd[dim];
+  for (int i = 0; i < atom->nlocal; i++) {
+    const double f = (atom->x[i][dim] - lo) / length;
+    for (std::size_t k = 0; k < cuts.size(); k++)
+      if (f < cuts[k]) local[k] += 1.0;
+  }
+  MPI_Allreduce(local.data(), all.data(), static_cast<int>(local.size()), MPI_DOUBLE, MPI_SUM, world);
+  return all;
+}
+
+// The particles each processor would own with the current cuts: one count per processor.
+std::vector<double> Balance::counts_per_processor() const
+{
+  std::vector<double> local(comm->nprocs, 0.0), all(comm->nprocs, 0.0);
+  for (int i = 0; i < atom->nlocal; i++) {
+    int loc[3] = {0, 0, 0};
+    for (int d = 0; d < domain->dimension; d++) {
+      const double f = (atom->x[i][d] - domain->boxlo[d]) / domain->prd[d];
+      const double *s = split(d);
+      while (loc[d] + 1 < comm->procgrid[d] && f >= s[loc[d] + 1]) loc[d]++;
+    }
+    local[comm->grid2proc[loc[0]][loc[1]][loc[2]]] += 1.0;
+  }
+  MPI_Allreduce(local.data(), all.data(), comm->nprocs, MPI_DOUBLE, MPI_SUM, world);
+  return all;
+}
+
+void Balance::shift(int dim, int halvings)
+{
+  double *s = split(dim);
+  const int slabs = comm->procgrid[dim];
+  const std::vector<double> old(s, s + slabs + 1);
+  const double total = static_cast<double>(atom->natoms);
+  // a slab at least as wide as the ghost cutoff (at most half the mean width)
+  const double width = std::min(comm->cutghostuser > 0.0 ? comm->cutghostuser : neighbor->cutneighmax,
+                                0.5 * domain->prd[dim] / slabs) / domain->prd[dim];
+  try {
+    const std::vector<double> cuts = crush::shift_cuts(
+        old, total, halvings, width, [this, dim](const std::vector<double> &c) { return counts_below(dim, c); });
+    for (int k = 1; k < slabs; k++) s[k] = cuts[k];
+  } catch (const crush::ModelError &e) {
+    fail(e.what());
+  }
+  comm->uniform = 0;
+}
+
+// The atoms go to their new processors now (one hop: crush_shift_cuts.h), with their ghosts; the
+// next run rebuilds everything else (neighbour lists, meshes, fixes' per-atom data) in a full setup.
+void Balance::migrate()
+{
+  const bigint natoms = atom->natoms;
+  domain->pbc();
+  domain->reset_box();
+  comm->setup();
+  if (neighbor->style) neighbor->setup_bins();
+  comm->exchange();
+  comm->borders();
+  bigint nlocal = atom->nlocal, total = 0;
+  MPI_Allreduce(&nlocal, &total, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  if (total != natoms) {
+    char msg[160];
+    snprintf(msg, sizeof(msg), "particles were lost while they moved to their new processors (" BIGINT_FORMAT
+             " of " BIGINT_FORMAT " kept)", total, natoms);
+    fail(msg);
+  }
+  update->first_update = 0;  // the next run, 'pre no' too, starts with lmp->init() and a full setup
+}
+
+void Balance::report(double before, double after, const std::string &axes) const
+{
+  if (comm->me != 0) return;
+  char line[512];
+  int n = snprintf(line, sizeof(line), "BALANCE: imbalance %.4f -> %.4f (largest count over the mean)", before, after);
+  for (int d = 0; d < domain->dimension; d++) {
+    if (comm->procgrid[d] < 2) continue;
+    n += snprintf(line + n, sizeof(line) - n, ", %c cuts", 'x' + d);
+    for (int k = 1; k < comm->procgrid[d] && n < 400; k++) n += snprintf(line + n, sizeof(line) - n, " %.6g", split(d)[k]);
+  }
+  if (axes.empty()) snprintf(line + n, sizeof(line) - n, " (unchanged)");
+  if (screen) fprintf(screen, "%s\n", line);
+  if (logfile) fprintf(logfile, "%s\n", line);
+}

@@ -1,0 +1,50 @@
+/* ----------------------------------------------------------------------
+   liggghts-crush: balance, a shift balancer between runs (LIGGGHTS 3.8.0 has no balance command).
+   See doc/balance.txt.
+
+   balance thresh shift dimstr niter stopthresh
+     thresh: rebalance only if the fullest processor holds more than thresh times the mean count
+     dimstr: the axes whose cuts move (x, y, z in any order), each once, in that order
+     niter: bisection steps per cut (resolution 2^-niter of its span)
+     stopthresh: the axes after the one that brings the imbalance to stopthresh or below are left
+
+   The processor grid stays; its planes move (comm->xsplit/ysplit/zsplit, uniform = 0) so that each
+   slab holds as many particles as the others (crush_shift_cuts.h), each cut at most to its
+   neighbouring old ones (the one hop of LIGGGHTS' exchange of atoms and of mesh elements). The atoms
+   move to their new processors at once; the next run starts with a full setup (its 'pre no' too).
+------------------------------------------------------------------------- */
+#ifdef COMMAND_CLASS
+
+CommandStyle(balance,Balance)
+
+#else
+
+#ifndef LMP_BALANCE_H
+#define LMP_BALANCE_H
+
+#include <string>
+#include <vector>
+
+#include "pointers.h"
+
+namespace LAMMPS_NS {
+
+class Balance : protected Pointers {
+ public:
+  Balance(class LAMMPS *);
+  void command(int, char **);
+
+ private:
+  double *split(int dim) const;
+  std::vector<double> counts_below(int dim, const std::vector<double> &cuts) const;
+  std::vector<double> counts_per_processor() const;
+  void shift(int dim, int halvings);
+  void migrate();
+  void report(double before, double after, const std::string &axes) const;
+  void fail(const std::string &what) const;  // error->all, naming the command
+};
+
+}  // namespace LAMMPS_NS
+
+#endif
+#endif
