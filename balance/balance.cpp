@@ -63,6 +63,10 @@ void Balance::command(int narg, char **arg)
   double after = before;
   std::string moved;
   if (before > thresh) {
+    // the planes as they are: a grid of more than one axis can end fuller somewhere than it began
+    std::vector<std::vector<double>> old(3);
+    for (int d = 0; d < 3; d++) old[d].assign(split(d), split(d) + comm->procgrid[d] + 1);
+    const int uniform = comm->uniform;
     for (char axis : axes) {
       const int dim = axis - 'x';
       if (comm->procgrid[dim] < 2) continue;
@@ -70,6 +74,12 @@ void Balance::command(int narg, char **arg)
       moved += axis;
       after = crush::imbalance(counts_per_processor());
       if (after <= stop) break;
+    }
+    if (after >= before) {
+      for (int d = 0; d < 3; d++) std::copy(old[d].begin(), old[d].end(), split(d));
+      comm->uniform = uniform;
+      after = before;
+      moved.clear();
     }
     if (!moved.empty()) migrate();
   }
@@ -131,17 +141,19 @@ void Balance::shift(int dim, int halvings)
   comm->uniform = 0;
 }
 
-// The atoms go to their new processors now (one hop: crush_shift_cuts.h), with their ghosts; the
-// next run rebuilds everything else (neighbour lists, meshes, fixes' per-atom data) in a full setup.
+// The atoms go to their new processors now (one hop: crush_shift_cuts.h) and the tag map follows;
+// the next run rebuilds everything else (ghosts, neighbour lists, meshes, fixes' per-atom data) in a
+// full setup. Nothing here needs the neighbour settings, which a restart read just before leaves unset.
 void Balance::migrate()
 {
   const bigint natoms = atom->natoms;
   domain->pbc();
   domain->reset_box();
-  comm->setup();
-  if (neighbor->style) neighbor->setup_bins();
   comm->exchange();
-  comm->borders();
+  if (atom->map_style) {
+    atom->map_init();
+    atom->map_set();
+  }
   bigint nlocal = atom->nlocal, total = 0;
   MPI_Allreduce(&nlocal, &total, 1, MPI_LMP_BIGINT, MPI_SUM, world);
   if (total != natoms) {

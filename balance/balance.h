@@ -11,7 +11,8 @@
    The processor grid stays; its planes move (comm->xsplit/ysplit/zsplit, uniform = 0) so that each
    slab holds as many particles as the others (crush_shift_cuts.h), each cut at most to its
    neighbouring old ones (the one hop of LIGGGHTS' exchange of atoms and of mesh elements). The atoms
-   move to their new processors at once; the next run starts with a full setup (its 'pre no' too).
+   move to their new processors at once, also right after read_restart; the next run starts with a
+   full setup (its 'pre no' too).
 ------------------------------------------------------------------------- */
 #ifdef COMMAND_CLASS
 
