@@ -245,7 +245,7 @@ void FixCrush::check_particles() const
   MPI_Barrier(world);  // the owner stops the run
 }
 
-// Every granular contact, pair or wall, feeds the check through LIGGGHTS' contact-model template
+// Every granular contact, pair or wall, feeds the check through LIGGGHTS' granular pair loop and wall
 // (patches/0009), whatever its models: the pair style must be granular, and the normal models must
 // have what the chosen force and 'every adaptive' read.
 void FixCrush::check_contact_models()

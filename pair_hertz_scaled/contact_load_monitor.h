@@ -1,10 +1,10 @@
 /* ----------------------------------------------------------------------
    liggghts-crush: how the contact models publish each contact's load (hertz_mindlin_contact_load.h).
 
-   Fix crush owns a ContactLoadRecorder and attaches it (contact_monitor.h). Every LIGGGHTS contact
-   model, pair and wall, records through the hook that patches/0009 adds to LIGGGHTS' contact-model
-   template (ContactModelBase::recordContactLoad, after the normal and cohesion models), and fix
-   wall/servo records its own walls: the load on the particle and on its partner ball (F_n / F_lim of
+   Fix crush owns a ContactLoadRecorder and attaches it (contact_monitor.h). Every LIGGGHTS contact,
+   whatever its models, is recorded by the granular pair loop and the wall contact once all models
+   have run (patches/0009: the pair loop has an instance that records and one that does not), and
+   fix wall/servo records its own walls: the load on the particle and on its partner ball (F_n / F_lim of
    eq. 5/7/10 once divided by the consumer's strength term). Fix crush with 'every' > 1 attaches it
    for checked steps only.
 ------------------------------------------------------------------------- */
@@ -25,15 +25,13 @@ class ContactLoadRecorder {
  public:
   ContactLoadRecorder() : load(0), limit_factor(0), total_force(false) {}
 
-  // One contact as LIGGGHTS' contact models leave it (SurfacesIntersectData after the normal and
-  // cohesion models). The elastic force is k_n U: the secant stiffness times the overlap, exact for
-  // hooke, hertz, their /stiffness forms and hertz/scaled (fix crush refuses it for the plastic
-  // models, whose k_n U overstates the unloading force); 'force total' reads F_n with viscous damping
-  // and with the cohesion that LIGGGHTS' cohesion models add to it. r' from the radii (a wall: r_i).
-  // Out of line: the contact loops keep only the test for a recorder, not this code, between their
-  // registers (instruction counts: doc/own_deck.md).
+  // One contact as LIGGGHTS' contact models leave it (SurfacesIntersectData after all of them). The
+  // elastic force is k_n U: the secant stiffness times the overlap, exact for hooke, hertz, their
+  // /stiffness forms and hertz/scaled (fix crush refuses it for the plastic models, whose k_n U
+  // overstates the unloading force); 'force total' reads F_n with viscous damping and with the
+  // cohesion that LIGGGHTS' cohesion models add to it. r' from the radii (a wall: r_i).
   template <class ContactData>
-  __attribute__((noinline)) void record(const ContactData &c) const
+  inline void record(const ContactData &c) const
   {
     const double effective_radius = c.is_wall ? c.radi : c.radi * c.radj / (c.radi + c.radj);
     record(c.i, c.j, c.is_wall, c.itype, c.jtype, total_force ? c.Fn : c.kn * c.deltan, effective_radius);

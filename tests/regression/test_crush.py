@@ -83,7 +83,7 @@ LAWS = ("hertz", "hertz_stiffness", "hooke", "hooke_stiffness", "hertz_scaled")
 def case_single_grain_law(liggghts, work, law, wall):
     """The single grain on a primitive plane or a mesh plane, with each contact law: F_lim depends on
     E' and r' alone (eq. 5), so every law breaks the grain when the quasi-static wall force (the
-    applied one) reaches the analytic F_lim, through LIGGGHTS' contact-model template (patches/0009)."""
+    applied one) reaches the analytic F_lim, through LIGGGHTS' pair loop and wall contact (patches/0009)."""
     rate, dt = 8.0, 1e-8
     out = run_deck(liggghts, SINGLE, work, {"law": law, "wall": wall})
     e_eff = 1.0 / ((1 - 0.09) / 7.8e9 + (1 - 0.29 ** 2) / 210e9)
