@@ -5,12 +5,12 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <cstdlib>
 #include <cstring>
 
 #include "atom.h"
 #include "comm.h"
 #include "crush_model_error.h"
+#include "crush_number.h"
 #include "crush_shift_cuts.h"
 #include "domain.h"
 #include "error.h"
@@ -21,12 +21,11 @@ using namespace LAMMPS_NS;
 
 namespace {
 
-// A number of the command line; ok says whether it is all of the word, finite and at least 'least'.
+// A number of the command line (crush_number.h: all of the word, finite); ok also needs v >= least.
 double number(const char *word, double least, bool &ok)
 {
-  char *end = NULL;
-  const double v = strtod(word, &end);
-  ok = end && *end == '\0' && v >= least && v < 1e300;
+  double v = 0.0;
+  ok = crush::parse_finite(word, v) && v >= least;
   return v;
 }
 
@@ -52,8 +51,8 @@ void Balance::command(int narg, char **arg)
     if (!strchr("xyz", axes[k]) || axes.find(axes[k]) != k || (axes[k] == 'z' && domain->dimension == 2))
       fail("dimstr expects the axes x, y, z (each once, z in 3d only), got '" + axes + "'");
   if (axes.empty()) fail("dimstr expects at least one axis");
-  const int halvings = static_cast<int>(number(arg[3], 1.0, ok));
-  if (!ok || halvings > 60 || strchr(arg[3], '.'))
+  long long halvings = 0;
+  if (!crush::parse_whole(arg[3], halvings) || halvings < 1 || halvings > 60)
     fail(std::string("niter expects a whole number in [1, 60] (bisection steps per cut), got '") + arg[3] + "'");
   const double stop = number(arg[4], 1.0, ok);
   if (!ok) fail(std::string("stopthresh expects a number >= 1, got '") + arg[4] + "'");
@@ -70,7 +69,7 @@ void Balance::command(int narg, char **arg)
     for (char axis : axes) {
       const int dim = axis - 'x';
       if (comm->procgrid[dim] < 2) continue;
-      shift(dim, halvings);
+      shift(dim, static_cast<int>(halvings));
       moved += axis;
       after = crush::imbalance(counts_per_processor());
       if (after <= stop) break;

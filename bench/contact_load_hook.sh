@@ -35,13 +35,13 @@ source "$here/dense_assembly.sh"
 mkdir -p "$work/a" "$work/b"
 cp "$work"/in.* "$work/a/"; cp "$work"/in.* "$work/b/"
 paired() {
-  local a=$1 b=$2 extra_a=$3 extra_b=$4 ta=0 tb=0 swap
+  local a=$1 b=$2 extra_a=$3 extra_b=$4 ta=0 tb=0 swap args_a args_b
   shift 4
+  dense_args "$model" "$tmodel" "$extra_a" "$steps" "$@"; args_a=("${dense_argv[@]}")
+  dense_args "$model" "$tmodel" "$extra_b" "$steps" "$@"; args_b=("${dense_argv[@]}")
   for swap in 0 1; do
-    (cd "$work/a" && taskset -c $swap "$a" -in in.dense_assembly -var model "$model" -var tmodel "$tmodel" \
-       -var extra "$extra_a" -var steps "$steps" "$@" -log none -screen screen.txt >/dev/null 2>&1) &
-    (cd "$work/b" && taskset -c $((1 - swap)) "$b" -in in.dense_assembly -var model "$model" -var tmodel "$tmodel" \
-       -var extra "$extra_b" -var steps "$steps" "$@" -log none -screen screen.txt >/dev/null 2>&1) &
+    (cd "$work/a" && taskset -c $swap "$a" "${args_a[@]}" -log none -screen screen.txt >/dev/null 2>&1) &
+    (cd "$work/b" && taskset -c $((1 - swap)) "$b" "${args_b[@]}" -log none -screen screen.txt >/dev/null 2>&1) &
     wait
     ta=$(awk -v t="$ta" '/^Loop time of/ {print t + $4}' "$work/a/screen.txt")
     tb=$(awk -v t="$tb" '/^Loop time of/ {print t + $4}' "$work/b/screen.txt")
@@ -54,11 +54,11 @@ laws=("hertz/scaled mindlin/scaled 5.7e9" "hertz history 5.7e9" "hertz/stiffness
       "hooke history 5.7e9" "hooke/stiffness history 7.8e5")
 # instructions BINARY EXTRA KN: callgrind's count per step (60 steps less 20, 2,048 spheres).
 instructions() {
-  local n st
+  local st
   declare -A at=()
   for st in 20 60; do
-    at[$st]=$(cd "$work/a" && valgrind --tool=callgrind --callgrind-out-file=/dev/null "$1" -in in.dense_assembly \
-       -var model "$model" -var tmodel "$tmodel" -var extra "$2" -var steps $st -var cells 8 -var kn "$3" \
+    dense_args "$model" "$tmodel" "$2" $st cells 8 kn "$3"
+    at[$st]=$(cd "$work/a" && valgrind --tool=callgrind --callgrind-out-file=/dev/null "$1" "${dense_argv[@]}" \
        -log none -screen none 2>&1 | awk '/Collected/ {print $4}')
   done
   awk -v a="${at[20]}" -v b="${at[60]}" 'BEGIN {printf "%.0f", (b - a) / 40}'
@@ -80,8 +80,8 @@ for r in $(seq "$rounds"); do
   line="round $r:"
   for law in "${laws[@]}"; do
     read -r model tmodel kn <<< "$law"
-    read -r h n <<< "$(paired "$hook" "$no_hook" in.none in.none -var kn "$kn")"
-    read -r c h2 <<< "$(paired "$hook" "$hook" in.crush_idle in.none -var kn "$kn")"
+    read -r h n <<< "$(paired "$hook" "$no_hook" in.none in.none kn "$kn")"
+    read -r c h2 <<< "$(paired "$hook" "$hook" in.crush_idle in.none kn "$kn")"
     bare[$model]+="$(ratio "$h" "$n") "
     crush[$model]+="$(ratio "$c" "$h2") "
     line+=" $model $n/$h $h2/$c s"

@@ -5,13 +5,18 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cp "$here"/in.dense_assembly "$here"/in.none "$here"/in.crush_idle "$here"/in.crush_all "$work"/
 
-# dense_run MODEL TMODEL EXTRA STEPS [VAR VALUE ...]: one run (with further -var pairs); its screen
-# output is in $work/screen.txt.
-dense_run() {
-  local vars=(-var model "$1" -var tmodel "$2" -var extra "$3" -var steps "$4")
+# dense_args MODEL TMODEL EXTRA STEPS [VAR VALUE ...]: sets the array dense_argv to the command line
+# of one run after the binary (with further -var pairs).
+dense_args() {
+  dense_argv=(-in in.dense_assembly -var model "$1" -var tmodel "$2" -var extra "$3" -var steps "$4")
   shift 4
-  while [ $# -ge 2 ]; do vars+=(-var "$1" "$2"); shift 2; done
-  (cd "$work" && "$liggghts" -in in.dense_assembly "${vars[@]}" -log none -screen screen.txt >/dev/null 2>&1 \
+  while [ $# -ge 2 ]; do dense_argv+=(-var "$1" "$2"); shift 2; done
+}
+
+# dense_run MODEL TMODEL EXTRA STEPS [VAR VALUE ...]: one run; its screen output is in $work/screen.txt.
+dense_run() {
+  dense_args "$@"
+  (cd "$work" && "$liggghts" "${dense_argv[@]}" -log none -screen screen.txt >/dev/null 2>&1 \
      || { tail -5 screen.txt; exit 1; })
 }
 

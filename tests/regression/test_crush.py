@@ -312,6 +312,22 @@ def case_bad_input(liggghts, work):
                                                       "pair_style      gran model hooke/hysteresis tangential history")],
          "not the elastic force of pair_style gran's model hooke/hysteresis"),
         ("no atom map", [("atom_modify     map array\n", "")], "fix crush needs an atom map: add 'atom_modify map array'"),
+        # the balance command's arguments
+        ("balance thresh", [("pair_coeff      * *\n", "pair_coeff      * *\nbalance 0.5 shift x 20 1.0\n")],
+         "balance: thresh expects a number >= 1"),
+        ("balance axes", [("pair_coeff      * *\n", "pair_coeff      * *\nbalance 1.0 shift xx 20 1.0\n")],
+         "balance: dimstr expects the axes x, y, z"),
+        ("balance niter", [("pair_coeff      * *\n", "pair_coeff      * *\nbalance 1.0 shift x 2.5 1.0\n")],
+         "balance: niter expects a whole number in [1, 60]"),
+        # hooke/stiffness needs no E: fix crush still does, for E' of eq. 4
+        ("no youngs modulus", [("fix             m1 all property/global youngsModulus peratomtype 7.8e9 7.8e9\n", ""),
+                               (pair, "fix             m5 all property/global kn peratomtypepair 2 1e5 1e5 1e5 1e5\n"
+                                      "fix             m6 all property/global kt peratomtypepair 2 1e5 1e5 1e5 1e5\n"
+                                      "fix             m7 all property/global gamman peratomtypepair 2 0 0 0 0\n"
+                                      "fix             m8 all property/global gammat peratomtypepair 2 0 0 0 0\n"
+                                      "pair_style      gran model hooke/stiffness tangential history")],
+         "needs the grains' Hertzian contact area, from E and nu of every type: define 'fix ID all "
+         "property/global youngsModulus"),
     ]
     for label, old, expected in [(c[0], [(c[1], c[2])], c[3]) for c in cases] + model_cases:
         deck = edited_deck(os.path.join(CRUSH, "in.compression"), os.path.join(work, label.replace(" ", "_"), "deck"),
