@@ -80,8 +80,8 @@ void FixWallServo::parse_arguments(const std::vector<std::string> &args)
     wall_type_ = static_cast<int>(v);
     return std::size_t(1);
   }, true);
-  for (int a = 0; a < 3; a++) t.add(std::string(1, kAxis[a]), "fixed, ramp, stress S (Pa, in (0, 1e12]) or velocity V "
-                                   "(m/s, |V| <= 1000)",
+  for (int a = 0; a < 3; a++) t.add(std::string(1, kAxis[a]), "fixed, ramp, stress S (Pa, in (0, 1e12]), velocity V "
+                                   "(m/s, |V| <= 1000) or mean P (Pa, in (0, 1e12])",
                                    [this, &t, a](const std::vector<std::string> &w, std::size_t at) {
     return read_mode(t, a, w, at);
   });
@@ -107,6 +107,11 @@ void FixWallServo::parse_arguments(const std::vector<std::string> &args)
   if (!outputs_.empty() && !(load_rate_ > 0.0))
     throw crush::ModelError("keyword 'outputs' needs 'ramp sigma_start sigma_max load_rate'");
   for (int a = 0; a < 3; a++)
+    for (int b = 0; b < a; b++)
+      if (mode_[a] == MEAN && mode_[b] == MEAN && value_[a] != value_[b])
+        throw crush::ModelError(std::string("axes ") + kAxis[b] + " and " + kAxis[a] +
+                                " hold different mean stresses: the axes in mode 'mean' share one P");
+  for (int a = 0; a < 3; a++)
     if (mode_[a] == RAMP && !(load_rate_ > 0.0))
       throw crush::ModelError(std::string("axis ") + kAxis[a] +
                               " is 'ramp' but no 'ramp sigma_start sigma_max load_rate' is given");
@@ -119,7 +124,7 @@ void FixWallServo::warn_suspicious()
     fix_warning(this, error, comm->me, "ramp load_rate above 1: the stress grows by more than sigma_ref per step, "
                                        "too fast for a quasi-static test (the paper's L_R is 0.05 to 0.1)");
   for (int a = 0; a < 3; a++) {
-    if ((mode_[a] == STRESS && value_[a] > 1e10) || (mode_[a] == RAMP && sigma_max_ > 1e10))
+    if (((mode_[a] == STRESS || mode_[a] == MEAN) && value_[a] > 1e10) || (mode_[a] == RAMP && sigma_max_ > 1e10))
       fix_warning(this, error, comm->me, std::string("axis ") + kAxis[a] + ": a stress above 10 GPa, beyond the "
                                                                            "crushing of any sand");
     if (mode_[a] == VELOCITY && std::fabs(value_[a]) > 10.0)
@@ -128,7 +133,7 @@ void FixWallServo::warn_suspicious()
   }
 }
 
-// x|y|z fixed | ramp | stress S | velocity V
+// x|y|z fixed | ramp | stress S | velocity V | mean P
 std::size_t FixWallServo::read_mode(const crush::KeywordTable &t, int axis, const std::vector<std::string> &w,
                                     std::size_t at)
 {
@@ -138,10 +143,10 @@ std::size_t FixWallServo::read_mode(const crush::KeywordTable &t, int axis, cons
     mode_[axis] = mode == "fixed" ? FIXED : RAMP;
     return 1;
   }
-  if (mode != "stress" && mode != "velocity") t.fail(name, mode);
-  mode_[axis] = mode == "stress" ? STRESS : VELOCITY;
+  if (mode != "stress" && mode != "velocity" && mode != "mean") t.fail(name, mode);
+  mode_[axis] = mode == "stress" ? STRESS : (mode == "mean" ? MEAN : VELOCITY);
   value_[axis] = t.value(name, w, at + 2);
-  if (mode == "stress" && !(value_[axis] > 0.0 && value_[axis] <= kMaxStress)) t.fail(name, mode + " " + w[at + 2]);
+  if (mode != "velocity" && !(value_[axis] > 0.0 && value_[axis] <= kMaxStress)) t.fail(name, mode + " " + w[at + 2]);
   if (mode == "velocity" && !(std::fabs(value_[axis]) <= 1000.0)) t.fail(name, mode + " " + w[at + 2]);
   return 2;
 }
@@ -258,8 +263,9 @@ void FixWallServo::move_walls(const double *force, const double *force_before, c
     double &hi = wall_[2 * a + 1];
     if (mode_[a] == VELOCITY) {
       hi += value_[a] * update->dt;
-    } else if (mode_[a] == RAMP || mode_[a] == STRESS) {
-      const double sigma = mode_[a] == RAMP ? target_ : value_[a];
+    } else if (mode_[a] != FIXED) {
+      const bool held = mode_[a] == STRESS || mode_[a] == MEAN;
+      const double sigma = mode_[a] == RAMP ? target_ : (mode_[a] == MEAN ? mean_axis_target(a) : value_[a]);
       double increment = 0.0, sample_stiffness = 0.0;
       if (mode_[a] == RAMP) {
         increment = (target_ - before) * area(a);
@@ -270,10 +276,10 @@ void FixWallServo::move_walls(const double *force, const double *force_before, c
                                         increment, sample_stiffness);
       // A constant stress on a dilating or creeping sample: the wall's average motion, fed forward.
       // Only while the wall has contacts (an approach at max_step is not a drift), within max_step.
-      if (mode_[a] == STRESS && stiffness[a] > 0.0) {
+      if (held && stiffness[a] > 0.0) {
         last_move_[a] = std::max(-max_step_, std::min(max_step_, last_move_[a] + drift_[a].value()));
         drift_[a].add(last_move_[a]);
-      } else if (mode_[a] == STRESS) {
+      } else if (held) {
         drift_[a] = crush::DriftEstimate();
       }
       hi -= last_move_[a];
@@ -312,6 +318,19 @@ double FixWallServo::area(int axis) const
 double FixWallServo::stress(int axis) const
 {
   return 0.5 * (force_[2 * axis] + force_[2 * axis + 1]) / area(axis);
+}
+
+// The stress of an axis in mode mean: its share of three times the mean stress, less what the other
+// axes carry (their measured stresses, this step's forces).
+double FixWallServo::mean_axis_target(int axis) const
+{
+  double others = 0.0;
+  int n_mean = 0;
+  for (int b = 0; b < 3; b++) {
+    if (mode_[b] == MEAN) n_mean++;
+    else others += stress(b);
+  }
+  return crush::mean_stress_target(value_[axis], others, n_mean);
 }
 
 // The ramp's stops: the output stresses up to sigma_max, and sigma_max.

@@ -1,10 +1,10 @@
 /* ----------------------------------------------------------------------
    liggghts-crush: fix wall/servo, six smooth planar walls around a cuboid sample, each axis fixed,
-   stress-controlled (constant or the load ramp of eq. 11) or moved at a constant velocity
-   (strain control). See doc/fix_wall_servo.txt.
+   stress-controlled (constant, the load ramp of eq. 11, or sharing a constant mean stress with the
+   other axes) or moved at a constant velocity (strain control). See doc/fix_wall_servo.txt.
 
    fix ID group wall/servo xlo xhi ylo yhi zlo zhi type T x MODE y MODE z MODE keyword value ...
-     MODE = fixed | ramp | stress S | velocity V
+     MODE = fixed | ramp | stress S | velocity V | mean P
      ramp sigma_start sigma_max load_rate [sigma_ref]    (eq. 11, natural log, default 1 kPa)
      alpha a (servo relaxation, default 0.5)   max_step d (m per step, default 1e-3 r_min)
      progress P (a line on the screen every P percent of the ramp's steps, with the time left)
@@ -53,7 +53,7 @@ class FixWallServo : public Fix {
   void add_contact_stiffness(std::vector<crush::ContactStiffness> &stiffness) const;
 
  private:
-  enum Mode { FIXED, RAMP, STRESS, VELOCITY };
+  enum Mode { FIXED, RAMP, STRESS, VELOCITY, MEAN };
 
   void parse_arguments(const std::vector<std::string> &args);
   void warn_suspicious();
@@ -76,13 +76,14 @@ class FixWallServo : public Fix {
   double last_stop() const;
   double area(int axis) const;
   double stress(int axis) const;
+  double mean_axis_target(int axis) const;
   void report_progress();
   // The settings a restart section must match for the servo's state to carry over.
   void settings_state(int *mode, double *value, double *ramp, double &alpha) const;
 
   double wall_[6];        // positions (m): xlo xhi ylo yhi zlo zhi
   Mode mode_[3];
-  double value_[3];       // constant stress (Pa) or velocity (m/s) of each axis
+  double value_[3];       // constant stress or mean stress (Pa), or velocity (m/s), of each axis
   int wall_type_;
   double sigma_start_, sigma_max_, load_rate_, sigma_ref_, target_;
   double ramp_steps_;

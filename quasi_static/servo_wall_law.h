@@ -32,6 +32,15 @@ inline double servo_step(double wall_force, double target_force, double wall_sti
   return dx;
 }
 
+// The stress each of n_mean axes held at a mean stress P must carry, so that the three axes' mean is P
+// when the others carry other_axes_stress in sum (Pa): a drained test at constant p' (the axial axis
+// strain-controlled, the lateral ones sharing 3P - sigma_axial). Never tensile: smooth walls only push.
+inline double mean_stress_target(double mean_stress, double other_axes_stress, int n_mean)
+{
+  const double sigma = (3.0 * mean_stress - other_axes_stress) / n_mean;
+  return sigma > 0.0 ? sigma : 0.0;
+}
+
 // The sample's stiffness seen by the wall: the ratio of exponential averages of the wall force's
 // change and of the wall's displacement per step (weight w per step: a memory of about 1/w steps).
 // Until the wall has advanced and the force grown on average, and never outside

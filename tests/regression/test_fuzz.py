@@ -183,6 +183,8 @@ QUASI_STATIC = replacing("damp/local alpha 0.05", damp_edge="damp/local alpha 0.
     replacing("z ramp ramp 1e5 1e7 0.1", servo_stress_edge="z stress 1e12", servo_stress_zero="z stress 0",
               servo_velocity_huge="z velocity -1e4") + \
     replacing("ramp 1e5 1e7 0.1", servo_rate_edge="ramp 1e5 1e7 100") + \
+    replacing("x fixed y fixed z ramp ramp 1e5 1e7 0.1", servo_mean="x mean 1e6 y mean 1e6 z velocity -0.01",
+              servo_mean_all="x mean 1e6 y mean 1e6 z mean 1e6", servo_mean_huge="x mean 1e12 y mean 1e12 z fixed") + \
     replacing("wall/servo 0 0.004", servo_walls_crossed="wall/servo 0.004 0") + \
     replacing("dt/stiffness fraction 0.5", dt_fraction_edge="dt/stiffness fraction 1",
               dt_fraction_zero="dt/stiffness fraction 0", dt_growth_edge="dt/stiffness fraction 0.5 growth 10")

@@ -114,3 +114,18 @@ TEST(ServoWall, DriftRemovesTheLagOnADilatingSample)
   EXPECT_NEAR(track(false), -v * kw / alpha / target, 1e-6);  // -0.2%
   EXPECT_LT(std::fabs(track(true)), 1e-6);
 }
+
+// Drained shearing at constant p': the lateral axes share 3 p' - sigma_axial, so the mean of the
+// three stresses stays p' whatever the axial stress; with every axis in mode mean each carries p'.
+TEST(ServoWall, MeanStressTargetKeepsTheMeanStress)
+{
+  const double p = 2e6;
+  for (double sigma_axial : {2e6, 3.1e6, 4.7e6}) {
+    const double lateral = crush::mean_stress_target(p, sigma_axial, 2);
+    EXPECT_NEAR((sigma_axial + 2.0 * lateral) / 3.0, p, 1e-9 * p);
+  }
+  EXPECT_DOUBLE_EQ(crush::mean_stress_target(p, 0.0, 3), p);
+  EXPECT_DOUBLE_EQ(crush::mean_stress_target(p, 2.5e6 + 1.5e6, 1), 2e6);
+  // an axial stress above 3 p' would need tension from smooth walls: none
+  EXPECT_EQ(crush::mean_stress_target(p, 7e6, 2), 0.0);
+}

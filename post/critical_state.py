@@ -1,0 +1,304 @@
+#!/usr/bin/python3
+"""Critical states of drained triaxial tests with crushing (examples/fontainebleau/in.triaxial,
+scripts/critical_state_study.sh), the critical state line and plane, for doc/critical_state.md.
+
+    post/critical_state.py [--out DIR] [--window W] FOLDER ...
+
+Reads every history_T<sample><N>.csv under the given folders (a test's folder is named
+<sample>_<p0>MPa[_<path>][_s<seed>] inside a folder named after its variant, e.g. rotation0/dense_2MPa;
+seconds.txt beside it, if any, is its wall-clock time). For each test, from its shearing rows
+(stage 1):
+  - the critical state: the means of e, p', q/p over the last W of axial strain (default 0.05: 25 -
+    30% for tests to 30%), I_G at the end, and the dilatancy d eps_v / d eps_a there (least squares;
+    0 at a critical state), with phi_cs = asin(3 M / (6 + M)) (triaxial compression);
+  - the peak q/p and its axial strain, e and I_G at the start of shearing, the crushing events during
+    shearing;
+and fits, for each variant:
+  - the critical state line e_cs = Gamma - lambda ln(p'/1 kPa) of each sample (dense, loose) and of
+    both together;
+  - the critical state plane e_cs = Gamma_0 - lambda ln(p'/1 kPa) - beta I_G of both samples together,
+    with the residuals of each test.
+Writes DIR/critical_states.csv (a row a test), DIR/fit.md (the tables of doc/critical_state.md) and
+the figures DIR/figures/critical_state_e_lnp.png (e against ln p', every test's path and critical
+state, the lines), critical_state_IG_p.png (I_G against p' through compression and shearing, the
+critical states) and critical_state_strain.png (q/p and e against axial strain).
+"""
+import argparse
+import csv
+import glob
+import math
+import os
+import re
+import sys
+
+import numpy as np
+
+FOLDER_NAME = re.compile(r"^(dense|loose)_([0-9.]+)MPa(?:_(sigma3|p))?(?:_s([0-9]+))?$")
+P_REF = 1e3  # Pa: ln(p'/1 kPa)
+
+
+def friction_angle(m):
+    """phi (degrees) of the stress ratio M = q/p in triaxial compression."""
+    return math.degrees(math.asin(3.0 * m / (6.0 + m)))
+
+
+def read_history(path):
+    with open(path) as f:
+        rows = list(csv.DictReader(f))
+    return {k: np.array([float(r[k]) for r in rows]) for k in rows[0]}
+
+
+def describe(folder):
+    """variant, sample, p0 (MPa), path and seed of a test folder."""
+    m = FOLDER_NAME.match(os.path.basename(os.path.normpath(folder)))
+    if not m:
+        return None
+    variant = os.path.basename(os.path.dirname(os.path.normpath(folder)))
+    return {"variant": variant, "sample": m.group(1), "p0_MPa": float(m.group(2)),
+            "path": m.group(3) or "sigma3", "seed": m.group(4) or ""}
+
+
+def critical_state(h, window):
+    """The critical state and the other measures of one test's history (columns of in.triaxial)."""
+    shear = h["stage"] == 1
+    eps = h["axial_strain"][shear]
+    if len(eps) < 3:
+        raise ValueError("fewer than 3 shearing rows")
+    tail = eps >= eps[-1] - window
+    if tail.sum() < 2:
+        raise ValueError("fewer than 2 rows in the last %g of axial strain" % window)
+    ratio = h["q_over_p"][shear]
+    ipk = int(np.argmax(ratio))
+    dilatancy = np.polyfit(eps[tail], h["volumetric_strain"][shear][tail], 1)[0]
+    m_cs = float(np.mean(ratio[tail]))
+    events = h["events"][shear]
+    return {"e0": h["void_ratio"][shear][0], "IG0": h["I_G"][shear][0],
+            "eps_end": eps[-1], "e_cs": float(np.mean(h["void_ratio"][shear][tail])),
+            "p_cs_MPa": float(np.mean(h["p"][shear][tail])) / 1e6, "M_cs": m_cs,
+            "phi_cs": friction_angle(m_cs), "IG_cs": h["I_G"][shear][-1],
+            "dilatancy_end": -dilatancy, "M_peak": ratio[ipk], "eps_peak": eps[ipk],
+            "phi_peak": friction_angle(ratio[ipk]), "events_shearing": events[-1] - events[0],
+            "particles_end": h["particles"][shear][-1]}
+
+
+def fit_line(p_mpa, e):
+    """Gamma, lambda of e = Gamma - lambda ln(p'/1 kPa), the residuals and R^2."""
+    x = np.log(np.asarray(p_mpa) * 1e6 / P_REF)
+    e = np.asarray(e)
+    a = np.column_stack([np.ones_like(x), -x])
+    (gamma, lam), *_ = np.linalg.lstsq(a, e, rcond=None)
+    residuals = e - a @ np.array([gamma, lam])
+    total = np.sum((e - e.mean()) ** 2)
+    return {"Gamma": gamma, "lambda": lam, "residuals": residuals,
+            "rms": float(np.sqrt(np.mean(residuals ** 2))),
+            "R2": float(1.0 - np.sum(residuals ** 2) / total) if total > 0 else 1.0}
+
+
+def fit_plane(p_mpa, ig, e):
+    """Gamma_0, lambda, beta of e = Gamma_0 - lambda ln(p'/1 kPa) - beta I_G and the residuals."""
+    x = np.log(np.asarray(p_mpa) * 1e6 / P_REF)
+    e = np.asarray(e)
+    a = np.column_stack([np.ones_like(x), -x, -np.asarray(ig)])
+    coefficients, _, rank, _ = np.linalg.lstsq(a, e, rcond=None)
+    residuals = e - a @ coefficients
+    total = np.sum((e - e.mean()) ** 2)
+    return {"Gamma0": coefficients[0], "lambda": coefficients[1], "beta": coefficients[2], "rank": int(rank),
+            "residuals": residuals, "rms": float(np.sqrt(np.mean(residuals ** 2))),
+            "R2": float(1.0 - np.sum(residuals ** 2) / total) if total > 0 else 1.0}
+
+
+def collect(folders, window):
+    tests = []
+    for top in folders:
+        for path in sorted(glob.glob(os.path.join(top, "**", "history_T*.csv"), recursive=True)):
+            folder = os.path.dirname(path)
+            info = describe(folder)
+            if info is None:
+                continue
+            h = read_history(path)
+            if "stage" not in h:
+                sys.exit("post/critical_state.py: %s has no stage column (an in.triaxial from before the "
+                         "critical-state study)" % path)
+            try:
+                info.update(critical_state(h, window))
+            except ValueError as e:
+                print("post/critical_state.py: %s skipped: %s" % (folder, e), file=sys.stderr)
+                continue
+            seconds = os.path.join(folder, "seconds.txt")
+            info["seconds"] = float(open(seconds).read()) if os.path.exists(seconds) else float("nan")
+            info["steps"] = int(h["step"][-1] - h["step"][0])
+            info["history"] = h
+            info["folder"] = folder
+            tests.append(info)
+    tests.sort(key=lambda t: (t["variant"], t["path"], t["sample"], t["seed"], t["p0_MPa"]))
+    return tests
+
+
+COLUMNS = ["variant", "sample", "p0_MPa", "path", "seed", "e0", "IG0", "M_peak", "eps_peak", "phi_peak",
+           "eps_end", "p_cs_MPa", "e_cs", "M_cs", "phi_cs", "IG_cs", "dilatancy_end", "events_shearing",
+           "particles_end", "steps", "seconds"]
+
+
+def write_csv(tests, path):
+    with open(path, "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(COLUMNS)
+        for t in tests:
+            w.writerow([t[c] if isinstance(t[c], str) else "%.6g" % t[c] for c in COLUMNS])
+
+
+def fits(tests):
+    """Per variant (tests on the sigma3 path): the line of each sample and of both, and the plane."""
+    out = {}
+    for variant in sorted({t["variant"] for t in tests}):
+        group = [t for t in tests if t["variant"] == variant and t["path"] == "sigma3"]
+        result = {"tests": group, "lines": {}}
+        for name, members in (("dense", [t for t in group if t["sample"] == "dense"]),
+                              ("loose", [t for t in group if t["sample"] == "loose"]), ("both", group)):
+            if len({t["p0_MPa"] for t in members}) >= 2:
+                result["lines"][name] = fit_line([t["p_cs_MPa"] for t in members], [t["e_cs"] for t in members])
+        if len(group) >= 4:
+            result["plane"] = fit_plane([t["p_cs_MPa"] for t in group], [t["IG_cs"] for t in group],
+                                        [t["e_cs"] for t in group])
+        out[variant] = result
+    return out
+
+
+def markdown(tests, fitted, window):
+    lines = ["### Critical states (mean over the last %g of axial strain)" % window, "",
+             "| variant | sample | p'_0 (MPa) | path | seed | e_0 | I_G,0 | peak q/p (at eps_a) | phi_peak | "
+             "p'_cs (MPa) | e_cs | q/p cs | phi_cs | I_G,cs | d eps_v/d eps_a at end | events in shearing | "
+             "particles | steps | s |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    for t in tests:
+        lines.append("| %s | %s | %g | %s | %s | %.3f | %.3f | %.3f (%.1f%%) | %.1f | %.3g | %.3f | %.3f | %.1f | "
+                     "%.3f | %.3f | %d | %d | %d | %.0f |"
+                     % (t["variant"], t["sample"], t["p0_MPa"], t["path"], t["seed"] or "-", t["e0"], t["IG0"],
+                        t["M_peak"], 100 * t["eps_peak"], t["phi_peak"], t["p_cs_MPa"], t["e_cs"], t["M_cs"],
+                        t["phi_cs"], t["IG_cs"], t["dilatancy_end"], t["events_shearing"], t["particles_end"],
+                        t["steps"], t["seconds"]))
+    lines += ["", "### Critical state lines e_cs = Gamma - lambda ln(p'/1 kPa)", "",
+              "| variant | samples | tests | Gamma | lambda | R^2 | rms residual |", "|---|---|---|---|---|---|---|"]
+    for variant, f in fitted.items():
+        for name, line in f["lines"].items():
+            count = len([t for t in f["tests"] if name == "both" or t["sample"] == name])
+            lines.append("| %s | %s | %d | %.4f | %.4f | %.3f | %.4f |"
+                         % (variant, name, count, line["Gamma"], line["lambda"], line["R2"], line["rms"]))
+    lines += ["", "### Critical state plane e_cs = Gamma_0 - lambda ln(p'/1 kPa) - beta I_G", "",
+              "| variant | tests | Gamma_0 | lambda | beta | R^2 | rms residual | rms of the single line |",
+              "|---|---|---|---|---|---|---|---|"]
+    for variant, f in fitted.items():
+        if "plane" in f:
+            pl = f["plane"]
+            single = f["lines"].get("both", {"rms": float("nan")})["rms"]
+            lines.append("| %s | %d | %.4f | %.4f | %.4f | %.3f | %.4f | %.4f |"
+                         % (variant, len(f["tests"]), pl["Gamma0"], pl["lambda"], pl["beta"], pl["R2"], pl["rms"],
+                            single))
+    lines += ["", "### Residuals of the plane", "", "| variant | sample | p'_0 (MPa) | e_cs | plane | residual |",
+              "|---|---|---|---|---|---|"]
+    for variant, f in fitted.items():
+        if "plane" in f:
+            for t, r in zip(f["tests"], f["plane"]["residuals"]):
+                lines.append("| %s | %s | %g | %.4f | %.4f | %+.4f |" % (variant, t["sample"], t["p0_MPa"], t["e_cs"],
+                                                                     t["e_cs"] - r, r))
+    return "\n".join(lines) + "\n"
+
+
+def figures(tests, fitted, out):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    os.makedirs(out, exist_ok=True)
+    variants = sorted({t["variant"] for t in tests})
+    pressures = sorted({t["p0_MPa"] for t in tests})
+    cmap = plt.get_cmap("viridis")
+    colour = {p: cmap(i / max(1, len(pressures) - 1)) for i, p in enumerate(pressures)}
+    dash = {"dense": "-", "loose": "--"}
+    marker = {"dense": "o", "loose": "s"}
+    written = []
+
+    fig, axes = plt.subplots(1, len(variants), figsize=(6 * len(variants), 4.5), squeeze=False)
+    for ax, variant in zip(axes[0], variants):
+        for t in (t for t in tests if t["variant"] == variant):
+            h = t["history"]
+            ax.plot(h["p"] / 1e6, h["void_ratio"], dash[t["sample"]], color=colour[t["p0_MPa"]], lw=0.7, alpha=0.6)
+            ax.plot(t["p_cs_MPa"], t["e_cs"], marker[t["sample"]], color=colour[t["p0_MPa"]],
+                    mfc="none" if t["sample"] == "loose" else colour[t["p0_MPa"]])
+        p = np.logspace(np.log10(min(pressures) / 2), np.log10(max(t["p_cs_MPa"] for t in tests) * 1.5), 50)
+        for name, line in fitted[variant]["lines"].items():
+            ax.plot(p, line["Gamma"] - line["lambda"] * np.log(p * 1e6 / P_REF), {"dense": "k-", "loose": "k--",
+                    "both": "r:"}[name], lw=1, label="CSL %s: %.3f - %.4f ln p'" % (name, line["Gamma"], line["lambda"]))
+        ax.set_xscale("log")
+        ax.set_xlabel("p' (MPa)")
+        ax.set_ylabel("void ratio e")
+        ax.set_title("%s (filled: dense, open: loose)" % variant)
+        ax.legend(fontsize=7)
+    fig.tight_layout()
+    written.append(os.path.join(out, "critical_state_e_lnp.png"))
+    fig.savefig(written[-1], dpi=120)
+    plt.close(fig)
+
+    fig, axes = plt.subplots(1, len(variants), figsize=(6 * len(variants), 4.5), squeeze=False)
+    for ax, variant in zip(axes[0], variants):
+        for t in (t for t in tests if t["variant"] == variant):
+            h = t["history"]
+            ax.plot(h["p"] / 1e6, h["I_G"], dash[t["sample"]], color=colour[t["p0_MPa"]], lw=0.7, alpha=0.6)
+            ax.plot(t["p_cs_MPa"], t["IG_cs"], marker[t["sample"]], color=colour[t["p0_MPa"]],
+                    mfc="none" if t["sample"] == "loose" else colour[t["p0_MPa"]])
+        ax.set_xscale("log")
+        ax.set_xlabel("p' (MPa)")
+        ax.set_ylabel("grading index I_G")
+        ax.set_title("%s: compression and shearing (markers: critical state)" % variant, fontsize=9)
+    fig.tight_layout()
+    written.append(os.path.join(out, "critical_state_IG_p.png"))
+    fig.savefig(written[-1], dpi=120)
+    plt.close(fig)
+
+    fig, axes = plt.subplots(2, len(variants), figsize=(6 * len(variants), 7), squeeze=False, sharex=True)
+    for j, variant in enumerate(variants):
+        for t in (t for t in tests if t["variant"] == variant and t["path"] == "sigma3"):
+            h = t["history"]
+            shear = h["stage"] == 1
+            label = "%g MPa" % t["p0_MPa"] if t["sample"] == "dense" else None
+            axes[0][j].plot(100 * h["axial_strain"][shear], h["q_over_p"][shear], dash[t["sample"]],
+                            color=colour[t["p0_MPa"]], lw=0.8, label=label)
+            axes[1][j].plot(100 * h["axial_strain"][shear], h["void_ratio"][shear], dash[t["sample"]],
+                            color=colour[t["p0_MPa"]], lw=0.8)
+        axes[0][j].set_ylabel("q/p'")
+        axes[0][j].set_title("%s (solid: dense, dashed: loose)" % variant)
+        axes[0][j].legend(fontsize=7, ncol=2)
+        axes[1][j].set_ylabel("void ratio e")
+        axes[1][j].set_xlabel("axial strain (%)")
+    fig.tight_layout()
+    written.append(os.path.join(out, "critical_state_strain.png"))
+    fig.savefig(written[-1], dpi=120)
+    plt.close(fig)
+    return written
+
+
+def main(argv):
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("folders", nargs="+")
+    parser.add_argument("--out", default=".", help="folder for critical_states.csv, fit.md and figures/")
+    parser.add_argument("--window", type=float, default=0.05, help="axial strain at the end over which the "
+                        "critical state is averaged (0.05)")
+    parser.add_argument("--no-figures", action="store_true")
+    a = parser.parse_args(argv)
+    tests = collect(a.folders, a.window)
+    if not tests:
+        sys.exit("post/critical_state.py: no in.triaxial histories in folders named <sample>_<p0>MPa under %s"
+                 % " ".join(a.folders))
+    os.makedirs(a.out, exist_ok=True)
+    write_csv(tests, os.path.join(a.out, "critical_states.csv"))
+    fitted = fits(tests)
+    text = markdown(tests, fitted, a.window)
+    with open(os.path.join(a.out, "fit.md"), "w") as f:
+        f.write(text)
+    print(text)
+    if not a.no_figures:
+        for path in figures(tests, fitted, os.path.join(a.out, "figures")):
+            print("wrote", path)
+
+
+if __name__ == "__main__":
+    main(sys.argv[1:])

@@ -1,0 +1,70 @@
+#!/usr/bin/env bash
+# The critical-state study of doc/critical_state.md: drained triaxial tests with crushing
+# (examples/fontainebleau/in.triaxial -var crushing 1), each an isotropic compression to p'_0 followed
+# by shearing to 30% axial strain, over pressures, densities and grain rotation; then
+# post/critical_state.py's critical states, fitted line and plane, tables and figures.
+#   bash scripts/critical_state_study.sh [OUT_DIR (default runs/critical_state)] [cases...]
+# A case is variant:sample:p0[:path[:seed]]: variant rotation0 (grains do not rotate, the decks'
+# default) or rolling (free rotation against LIGGGHTS' rolling resistance epsd2, mu_r 0.7,
+# doc/results.md), sample dense or loose (in.prepare with friction 0.5), p0 the cell pressure in MPa,
+# path sigma3 (constant cell pressure, default) or p (constant p'), seed (the sample's and the
+# strengths', default the decks' 15485863). Default: both variants, both samples, p0 = 0.1 0.5 2 5 10
+# 20 50 MPa, path sigma3. The case "fit" only refits and redraws from the cases already run.
+# Environment: JOBS (tests run at once, one rank each; default 2), LIGGGHTS (build/liggghts),
+# AXIAL_MAX (0.3).
+# Writes OUT_DIR/<variant>/<sample>_<p0>MPa[_<path>][_s<seed>]/ (the deck's outputs, screen.txt,
+# log.liggghts, seconds.txt), OUT_DIR/runtimes.csv and, from post/critical_state.py,
+# OUT_DIR/critical_states.csv, OUT_DIR/fit.md and OUT_DIR/figures/*.png.
+set -euo pipefail
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+out=$(mkdir -p "${1:-$here/runs/critical_state}" && cd "${1:-$here/runs/critical_state}" && pwd)
+shift || true
+liggghts=${LIGGGHTS:-$here/build/liggghts}
+jobs=${JOBS:-2}
+axial_max=${AXIAL_MAX:-0.3}
+source "$here/scripts/mpi_env.sh"
+
+run_case() {
+  local spec=$1 variant sample p0 path seed
+  IFS=: read -r variant sample p0 path seed <<< "$spec"
+  path=${path:-sigma3}
+  local vars=(-var crushing 1 -var cell "$(awk -v p="$p0" 'BEGIN {printf "%.6g", p * 1e6}')" -var axial_max "$axial_max"
+              -var path "$path" -var sample "$sample" -var checkpoint_every 0)
+  case $sample in
+    dense) ;;
+    loose) vars+=(-var mu_prep 0.5) ;;
+    *) echo "unknown sample $sample (dense, loose)" >&2; return 2 ;;
+  esac
+  case $variant in
+    rotation0) ;;
+    rolling) vars+=(-var rotation 1 -var rolling epsd2 -var mu_r 0.7) ;;
+    *) echo "unknown variant $variant (rotation0, rolling)" >&2; return 2 ;;
+  esac
+  local dir=$out/$variant/${sample}_${p0}MPa
+  [ "$path" = sigma3 ] || dir=${dir}_$path
+  if [ -n "${seed:-}" ]; then vars+=(-var seed "$seed"); dir=${dir}_s$seed; fi
+  rm -rf "$dir" && mkdir -p "$dir" && cp "$here"/examples/fontainebleau/in.* "$dir"/
+  echo "== $spec: liggghts -in in.triaxial ${vars[*]}"
+  local start
+  start=$(date +%s%N)
+  (cd "$dir" && "$liggghts" -in in.triaxial "${vars[@]}" -log log.liggghts > screen.txt 2>&1) \
+    || { tail -n 5 "$dir/screen.txt" >&2; echo "$spec failed: $dir/screen.txt" >&2; return 1; }
+  awk -v a="$start" -v b="$(date +%s%N)" 'BEGIN {printf "%.1f\n", (b - a) / 1e9}' > "$dir/seconds.txt"
+  echo "$spec,$(cat "$dir/seconds.txt")" >> "$out/runtimes.csv"
+  echo "   $spec: $(cat "$dir/seconds.txt") s"
+}
+
+if [ "${1:-}" = --one ]; then run_case "$2"; exit; fi
+cases=${*:-}
+if [ -z "$cases" ]; then
+  for variant in rotation0 rolling; do
+    for p0 in 0.1 0.5 2 5 10 20 50; do
+      for sample in dense loose; do cases+=" $variant:$sample:$p0"; done
+    done
+  done
+fi
+if [ "$cases" != fit ]; then
+  [ -f "$out/runtimes.csv" ] || echo "case,seconds" > "$out/runtimes.csv"
+  printf '%s\n' $cases | xargs -P "$jobs" -I{} bash "${BASH_SOURCE[0]}" "$out" --one {}
+fi
+/usr/bin/python3 "$here/post/critical_state.py" --out "$out" "$out"
