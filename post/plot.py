@@ -157,6 +157,8 @@ def figure_triaxial(triaxial, out):
     fig, axes = plt.subplots(1, 2, figsize=(10, 4.5))
     for (sample, n, folder), h in sorted(triaxial.items()):
         name = "%s, N = %s (%s)" % (sample, n, folder)
+        if "stage" in h:  # the shearing rows, without an isotropic compression before them
+            h = {k: [v for v, s in zip(column, h["stage"]) if s == 1] for k, column in h.items()}
         axes[0].plot([100 * e for e in h["axial_strain"]], mpa(h["q"]), label=name)
         axes[1].plot([100 * e for e in h["axial_strain"]], [100 * e for e in h["volumetric_strain"]], label=name)
     axes[0].set_ylabel("deviatoric stress q (MPa)")

@@ -21,6 +21,7 @@ def phi(m):
 def angles(folder, last=0.25):
     path = sorted(glob.glob(os.path.join(folder, "history_T*.csv")))[0]
     rows = [dict((k, float(v)) for k, v in r.items()) for r in csv.DictReader(open(path))]
+    rows = [r for r in rows if r.get("stage", 1) == 1]  # shearing only (in.triaxial's stage 1)
     eps = [r["axial_strain"] for r in rows]
     m = [r["q_over_p"] for r in rows]
     vol = [r["volumetric_strain"] for r in rows]

@@ -205,6 +205,39 @@ def case_resume_triaxial(liggghts, work):
     check(a == b and a.count("\n") > 3, "%s identical to the uninterrupted run's (%d lines)" % (history, a.count("\n")))
 
 
+def marker_variable(folder, base, name):
+    """A kept variable of the newest checkpoint, as its marker records it."""
+    with open(os.path.join(folder, base + ".last")) as f:
+        rows = [line.split() for line in f if line.strip() and not line.startswith("#")]
+    return float([w for w in rows[-1] if w.startswith(name + "=")][0].split("=")[1])
+
+
+@variants(timeout=600)
+def case_resume_triaxial_compression(liggghts, work):
+    """in.triaxial with crushing, killed during its isotropic compression (stage 0) and resumed: the
+    same history, events and gradings as the uninterrupted run to the last digit, through the rest
+    of the compression, the switch to shearing and the shearing."""
+    sample = prepare(liggghts, work)
+    variables = {"reuse": 1, "crushing": 1, "cell": 1e6, "settle": 2000, "axial_max": 0.003,
+                 "checkpoint_every": 1000, "vtk": 0}
+    outputs = ("history_Tdense2.csv", "events_Tdense2.csv", "gsd_Tdense2_1MPa.csv", "gsd_Tdense2_sheared.csv")
+    reference = copy_sample(sample, os.path.join(work, "uninterrupted"))
+    run(liggghts, reference, 1, variables, deck="in.triaxial")
+    folder = copy_sample(sample, os.path.join(work, "killed"))
+    newest = kill_after(liggghts, folder, 1, variables, 0, 0.05, deck="in.triaxial", base="ckpt_Tdense2")
+    check(newest is not None and marker_variable(folder, "ckpt_Tdense2", "stage") == 0,
+          "killed after a checkpoint of the isotropic compression (step %s)" % newest)
+    out = run(liggghts, folder, 1, dict(variables, resume=1), deck="in.triaxial")
+    check("CHECKPOINT resumed from" in out, "resumed from a checkpoint")
+    for name in outputs:
+        a, b = open(os.path.join(reference, name)).read(), open(os.path.join(folder, name)).read()
+        check(a == b and a.count("\n") > 3, "%s identical to the uninterrupted run's (%d lines)" % (name, a.count("\n")))
+    rows = open(os.path.join(folder, outputs[0])).read().splitlines()
+    stages = [row.rsplit(",", 1)[1] for row in rows[1:]]
+    check("0" in stages and "1" in stages, "the history holds both stages (%d rows of compression, %d of "
+          "shearing)" % (stages.count("0"), stages.count("1")))
+
+
 @variants(*each_rank_count(2), timeout=600)
 def case_resume_mpi(liggghts, work, ranks):
     """On 2 ranks, killed in the middle of a stretch and resumed: the books hold at every history row
