@@ -6,7 +6,8 @@ scripts/critical_state_study.sh), the critical state line and plane, for doc/cri
 
 Reads every history_T<sample><N>.csv under the given folders (a test's folder is named
 <sample>_<p0>MPa[_<path>][_s<seed>] inside a folder named after its variant, e.g. rotation0/dense_2MPa;
-seconds.txt beside it, if any, is its wall-clock time). For each test, from its shearing rows
+seconds.txt and cpu_seconds.txt beside it, if any, are its wall-clock and CPU time; the tables give
+the CPU time, or the wall-clock time where there is none). For each test, from its shearing rows
 (stage 1):
   - the critical state: the means of e, p', q/p over the last W of axial strain (default 0.05: 25 -
     30% for tests to 30%), I_G at the end, and the dilatancy d eps_v / d eps_a there (least squares;
@@ -124,8 +125,9 @@ def collect(folders, window):
             except ValueError as e:
                 print("post/critical_state.py: %s skipped: %s" % (folder, e), file=sys.stderr)
                 continue
-            seconds = os.path.join(folder, "seconds.txt")
-            info["seconds"] = float(open(seconds).read()) if os.path.exists(seconds) else float("nan")
+            for key in ("seconds", "cpu_seconds"):
+                path_s = os.path.join(folder, key + ".txt")
+                info[key] = float(open(path_s).read()) if os.path.exists(path_s) else float("nan")
             info["steps"] = int(h["step"][-1] - h["step"][0])
             info["history"] = h
             info["folder"] = folder
@@ -136,7 +138,7 @@ def collect(folders, window):
 
 COLUMNS = ["variant", "sample", "p0_MPa", "path", "seed", "e0", "IG0", "M_peak", "eps_peak", "phi_peak",
            "eps_end", "p_cs_MPa", "e_cs", "M_cs", "phi_cs", "IG_cs", "dilatancy_end", "events_shearing",
-           "particles_end", "steps", "seconds"]
+           "particles_end", "steps", "seconds", "cpu_seconds"]
 
 
 def write_csv(tests, path):
@@ -168,7 +170,7 @@ def markdown(tests, fitted, window):
     lines = ["### Critical states (mean over the last %g of axial strain)" % window, "",
              "| variant | sample | p'_0 (MPa) | path | seed | e_0 | I_G,0 | peak q/p (at eps_a) | phi_peak | "
              "p'_cs (MPa) | e_cs | q/p cs | phi_cs | I_G,cs | d eps_v/d eps_a at end | events in shearing | "
-             "particles | steps | s |",
+             "particles | steps | CPU s |",
              "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for t in tests:
         lines.append("| %s | %s | %g | %s | %s | %.3f | %.3f | %.3f (%.1f%%) | %.1f | %.3g | %.3f | %.3f | %.1f | "
@@ -176,7 +178,7 @@ def markdown(tests, fitted, window):
                      % (t["variant"], t["sample"], t["p0_MPa"], t["path"], t["seed"] or "-", t["e0"], t["IG0"],
                         t["M_peak"], 100 * t["eps_peak"], t["phi_peak"], t["p_cs_MPa"], t["e_cs"], t["M_cs"],
                         t["phi_cs"], t["IG_cs"], t["dilatancy_end"], t["events_shearing"], t["particles_end"],
-                        t["steps"], t["seconds"]))
+                        t["steps"], t["cpu_seconds"] if t["cpu_seconds"] == t["cpu_seconds"] else t["seconds"]))
     lines += ["", "### Critical state lines e_cs = Gamma - lambda ln(p'/1 kPa)", "",
               "| variant | samples | tests | Gamma | lambda | R^2 | rms residual |", "|---|---|---|---|---|---|---|"]
     for variant, f in fitted.items():

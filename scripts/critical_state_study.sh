@@ -13,7 +13,7 @@
 # Environment: JOBS (tests run at once, one rank each; default 2), LIGGGHTS (build/liggghts),
 # AXIAL_MAX (0.3).
 # Writes OUT_DIR/<variant>/<sample>_<p0>MPa[_<path>][_s<seed>]/ (the deck's outputs, screen.txt,
-# log.liggghts, seconds.txt), OUT_DIR/runtimes.csv and, from post/critical_state.py,
+# log.liggghts, seconds.txt and cpu_seconds.txt: wall-clock and CPU time), OUT_DIR/runtimes.csv and, from post/critical_state.py,
 # OUT_DIR/critical_states.csv, OUT_DIR/fit.md and OUT_DIR/figures/*.png.
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -25,7 +25,7 @@ axial_max=${AXIAL_MAX:-0.3}
 source "$here/scripts/mpi_env.sh"
 
 run_case() {
-  local spec=$1 variant sample p0 path seed
+  local spec=$1 variant sample p0 path seed wall cpu
   IFS=: read -r variant sample p0 path seed <<< "$spec"
   path=${path:-sigma3}
   local vars=(-var crushing 1 -var cell "$(awk -v p="$p0" 'BEGIN {printf "%.6g", p * 1e6}')" -var axial_max "$axial_max"
@@ -45,13 +45,15 @@ run_case() {
   if [ -n "${seed:-}" ]; then vars+=(-var seed "$seed"); dir=${dir}_s$seed; fi
   rm -rf "$dir" && mkdir -p "$dir" && cp "$here"/examples/fontainebleau/in.* "$dir"/
   echo "== $spec: liggghts -in in.triaxial ${vars[*]}"
-  local start
-  start=$(date +%s%N)
-  (cd "$dir" && "$liggghts" -in in.triaxial "${vars[@]}" -log log.liggghts > screen.txt 2>&1) \
+  # wall-clock and CPU seconds (the CPU time does not grow when JOBS exceeds the free cores)
+  local TIMEFORMAT="%R %U"
+  { time (cd "$dir" && "$liggghts" -in in.triaxial "${vars[@]}" -log log.liggghts > screen.txt 2>&1) ; } 2> "$dir/time.txt" \
     || { tail -n 5 "$dir/screen.txt" >&2; echo "$spec failed: $dir/screen.txt" >&2; return 1; }
-  awk -v a="$start" -v b="$(date +%s%N)" 'BEGIN {printf "%.1f\n", (b - a) / 1e9}' > "$dir/seconds.txt"
-  echo "$spec,$(cat "$dir/seconds.txt")" >> "$out/runtimes.csv"
-  echo "   $spec: $(cat "$dir/seconds.txt") s"
+  read -r wall cpu < "$dir/time.txt"
+  echo "$wall" > "$dir/seconds.txt"
+  echo "$cpu" > "$dir/cpu_seconds.txt"
+  echo "$spec,$wall,$cpu" >> "$out/runtimes.csv"
+  echo "   $spec: $wall s ($cpu s CPU)"
 }
 
 if [ "${1:-}" = --one ]; then run_case "$2"; exit; fi
@@ -64,7 +66,7 @@ if [ -z "$cases" ]; then
   done
 fi
 if [ "$cases" != fit ]; then
-  [ -f "$out/runtimes.csv" ] || echo "case,seconds" > "$out/runtimes.csv"
+  [ -f "$out/runtimes.csv" ] || echo "case,seconds,cpu_seconds" > "$out/runtimes.csv"
   printf '%s\n' $cases | xargs -P "$jobs" -I{} bash "${BASH_SOURCE[0]}" "$out" --one {}
 fi
 /usr/bin/python3 "$here/post/critical_state.py" --out "$out" "$out"

@@ -12,6 +12,7 @@ import csv
 import math
 import os
 import re
+import shutil
 import subprocess
 import sys
 
@@ -159,6 +160,8 @@ def write_fixture(folder, cell_mpa, ig0, e_shift=0.0):
         f.write("\n".join(rows) + "\n")
     with open(os.path.join(folder, "seconds.txt"), "w") as f:
         f.write("12.5\n")
+    with open(os.path.join(folder, "cpu_seconds.txt"), "w") as f:
+        f.write("11.0\n")
 
 
 def case_fit_fixture(liggghts, work):
@@ -166,6 +169,8 @@ def case_fit_fixture(liggghts, work):
     0.8 I_G at q/p = 1.2: it recovers the plane exactly, phi_cs = 30 degrees, each sample's line
     through its own points, residuals that are the shifts put in, and writes the tables and figures."""
     study = os.path.join(work, "study")
+    if os.path.isdir(study):
+        shutil.rmtree(study)
     pressures = (0.5, 2.0, 8.0, 20.0)
     for sample, ig0 in (("dense", 0.80), ("loose", 0.85)):
         for p in pressures:
@@ -187,6 +192,8 @@ def case_fit_fixture(liggghts, work):
               and abs(float(t["eps_peak"]) - 0.05) < 1e-9 and int(float(t["events_shearing"])) == 30,
               "no volume change at the end, peak 1.5 at 5%, 30 events while shearing")
     fit = open(os.path.join(work, "fit", "fit.md")).read()
+    check(re.search(r"^\| rotation0 \| dense \| 0.5 \|.* \| 305000 \| 11 \|$", fit, re.M) is not None,
+          "fit.md gives each test's steps and its CPU time (not the wall-clock time)")
     plane = re.search(r"^\| rotation0 \| 8 \| (\S+) \| (\S+) \| (\S+) \| (\S+) \| (\S+) \| (\S+) \|$", fit, re.M)
     check(plane is not None, "fit.md has the plane's row")
     gamma0, lam, beta, r2, rms, single = map(float, plane.groups())
