@@ -10,8 +10,9 @@ seconds.txt and cpu_seconds.txt beside it, if any, are its wall-clock and CPU ti
 the CPU time, or the wall-clock time where there is none). For each test, from its shearing rows
 (stage 1):
   - the critical state: the means of e, p', q/p over the last W of axial strain (default 0.05: 25 -
-    30% for tests to 30%), I_G at the end, and the dilatancy d eps_v / d eps_a there (least squares;
-    0 at a critical state), with phi_cs = asin(3 M / (6 + M)) (triaxial compression);
+    30% for tests to 30%), I_G at the end, and the dilatancy -d eps_v / d eps_a there (least squares,
+    eps_v compression positive: > 0 dilating, 0 at a critical state), with phi_cs = asin(3 M / (6 + M))
+    (triaxial compression);
   - the peak q/p and its axial strain, e and I_G at the start of shearing, the crushing events during
     shearing;
 and fits, for each variant:
@@ -169,7 +170,7 @@ def fits(tests):
 def markdown(tests, fitted, window):
     lines = ["### Critical states (mean over the last %g of axial strain)" % window, "",
              "| variant | sample | p'_0 (MPa) | path | seed | e_0 | I_G,0 | peak q/p (at eps_a) | phi_peak | "
-             "p'_cs (MPa) | e_cs | q/p cs | phi_cs | I_G,cs | d eps_v/d eps_a at end | events in shearing | "
+             "p'_cs (MPa) | e_cs | q/p cs | phi_cs | I_G,cs | dilatancy at end | events in shearing | "
              "particles | steps | CPU s |",
              "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for t in tests:
@@ -179,7 +180,8 @@ def markdown(tests, fitted, window):
                         t["M_peak"], 100 * t["eps_peak"], t["phi_peak"], t["p_cs_MPa"], t["e_cs"], t["M_cs"],
                         t["phi_cs"], t["IG_cs"], t["dilatancy_end"], t["events_shearing"], t["particles_end"],
                         t["steps"], t["cpu_seconds"] if t["cpu_seconds"] == t["cpu_seconds"] else t["seconds"]))
-    lines += ["", "### Critical state lines e_cs = Gamma - lambda ln(p'/1 kPa)", "",
+    lines += ["", "(dilatancy: -d eps_v / d eps_a over the window, eps_v compression positive: > 0 dilating, < 0 "
+              "contracting, 0 at a critical state)", "", "### Critical state lines e_cs = Gamma - lambda ln(p'/1 kPa)", "",
               "| variant | samples | tests | Gamma | lambda | R^2 | rms residual |", "|---|---|---|---|---|---|---|"]
     for variant, f in fitted.items():
         for name, line in f["lines"].items():
