@@ -175,11 +175,12 @@ def markdown(tests, fitted, window):
              "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for t in tests:
         lines.append("| %s | %s | %g | %s | %s | %.3f | %.3f | %.3f (%.1f%%) | %.1f | %.3g | %.3f | %.3f | %.1f | "
-                     "%.3f | %.3f | %d | %d | %d | %.0f |"
+                     "%.3f | %.3f | %d | %d | %d | %s |"
                      % (t["variant"], t["sample"], t["p0_MPa"], t["path"], t["seed"] or "-", t["e0"], t["IG0"],
                         t["M_peak"], 100 * t["eps_peak"], t["phi_peak"], t["p_cs_MPa"], t["e_cs"], t["M_cs"],
                         t["phi_cs"], t["IG_cs"], t["dilatancy_end"], t["events_shearing"], t["particles_end"],
-                        t["steps"], t["cpu_seconds"] if t["cpu_seconds"] == t["cpu_seconds"] else t["seconds"]))
+                        t["steps"], "%.0f" % t["cpu_seconds"] if t["cpu_seconds"] == t["cpu_seconds"]
+                        else "%.0f wall" % t["seconds"]))
     lines += ["", "(dilatancy: -d eps_v / d eps_a over the window, eps_v compression positive: > 0 dilating, < 0 "
               "contracting, 0 at a critical state)", "", "### Critical state lines e_cs = Gamma - lambda ln(p'/1 kPa)", "",
               "| variant | samples | tests | Gamma | lambda | R^2 | rms residual |", "|---|---|---|---|---|---|---|"]

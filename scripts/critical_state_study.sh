@@ -5,11 +5,14 @@
 # post/critical_state.py's critical states, fitted line and plane, tables and figures.
 #   bash scripts/critical_state_study.sh [OUT_DIR (default runs/critical_state)] [cases...]
 # A case is variant:sample:p0[:path[:seed]]: variant rotation0 (grains do not rotate, the decks'
-# default) or rolling (free rotation against LIGGGHTS' rolling resistance epsd2, mu_r 0.7,
-# doc/results.md), sample dense or loose (in.prepare with friction 0.5), p0 the cell pressure in MPa,
+# default), rolling (free rotation against LIGGGHTS' rolling resistance epsd2, mu_r 0.7,
+# doc/results.md) or normal (as rotation0, with the strength draw 'normal' of fix crush: no grain of
+# zero strength, doc/results.md), sample dense or loose (in.prepare with friction 0.5), p0 the cell pressure in MPa,
 # path sigma3 (constant cell pressure, default) or p (constant p'), seed (the sample's and the
-# strengths', default the decks' 15485863). Default: both variants, both samples, p0 = 0.1 0.5 2 5 10
-# 20 50 MPa, path sigma3. The case "fit" only refits and redraws from the cases already run.
+# strengths', default the decks' 15485863). Default: the cases of doc/critical_state.md: rotation0 at
+# p0 = 0.1 0.5 2 5 10 20 50 MPa, rolling and normal at 2 10 50 MPa, each dense and loose, path sigma3;
+# constant p' (path p) for rotation0 at 2 and 10 MPa. The case "fit" only refits and redraws from the
+# cases already run.
 # Environment: JOBS (tests run at once, one rank each; default 2), LIGGGHTS (build/liggghts),
 # AXIAL_MAX (0.3).
 # Writes OUT_DIR/<variant>/<sample>_<p0>MPa[_<path>][_s<seed>]/ (the deck's outputs, screen.txt,
@@ -38,7 +41,8 @@ run_case() {
   case $variant in
     rotation0) ;;
     rolling) vars+=(-var rotation 1 -var rolling epsd2 -var mu_r 0.7) ;;
-    *) echo "unknown variant $variant (rotation0, rolling)" >&2; return 2 ;;
+    normal) vars+=(-var distribution normal) ;;
+    *) echo "unknown variant $variant (rotation0, rolling, normal)" >&2; return 2 ;;
   esac
   local dir=$out/$variant/${sample}_${p0}MPa
   [ "$path" = sigma3 ] || dir=${dir}_$path
@@ -59,10 +63,10 @@ run_case() {
 if [ "${1:-}" = --one ]; then run_case "$2"; exit; fi
 cases=${*:-}
 if [ -z "$cases" ]; then
-  for variant in rotation0 rolling; do
-    for p0 in 0.1 0.5 2 5 10 20 50; do
-      for sample in dense loose; do cases+=" $variant:$sample:$p0"; done
-    done
+  for sample in dense loose; do
+    for p0 in 0.1 0.5 2 5 10 20 50; do cases+=" rotation0:$sample:$p0"; done
+    for p0 in 2 10 50; do cases+=" rolling:$sample:$p0 normal:$sample:$p0"; done
+    for p0 in 2 10; do cases+=" rotation0:$sample:$p0:p"; done
   done
 fi
 if [ "$cases" != fit ]; then
