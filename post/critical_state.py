@@ -17,9 +17,10 @@ the CPU time, or the wall-clock time where there is none). For each test, from i
     shearing;
 and fits, for each variant:
   - the critical state line e_cs = Gamma - lambda ln(p'/1 kPa) of each sample (dense, loose) and of
-    both together;
+    both together, and two curved lines through the same points (fit_curved);
   - the critical state plane e_cs = Gamma_0 - lambda ln(p'/1 kPa) - beta I_G of both samples together,
-    with the residuals of each test.
+    with the residuals of each test;
+each coefficient with its standard error (a plane over a narrow range of I_G cannot separate beta).
 Writes DIR/critical_states.csv (a row a test), DIR/fit.md (the tables of doc/critical_state.md) and
 the figures DIR/figures/critical_state_e_lnp.png (e against ln p', every test's path and critical
 state, the lines), critical_state_IG_p.png (I_G against p' through compression and shearing, the
@@ -83,6 +84,19 @@ def critical_state(h, window):
             "particles_end": h["particles"][shear][-1]}
 
 
+def standard_errors(a, residuals):
+    """Standard errors of least-squares coefficients: sqrt(diag(s^2 (A^T A)^-1)), s^2 = RSS/(n - k);
+    infinite where the data cannot separate a coefficient (n <= k, or A^T A singular)."""
+    n, k = a.shape
+    if n <= k:
+        return np.full(k, np.inf)
+    s2 = float(np.sum(residuals ** 2)) / (n - k)
+    try:
+        return np.sqrt(np.abs(np.diag(s2 * np.linalg.inv(a.T @ a))))
+    except np.linalg.LinAlgError:
+        return np.full(k, np.inf)
+
+
 def fit_line(p_mpa, e):
     """Gamma, lambda of e = Gamma - lambda ln(p'/1 kPa), the residuals and R^2."""
     x = np.log(np.asarray(p_mpa) * 1e6 / P_REF)
@@ -91,9 +105,26 @@ def fit_line(p_mpa, e):
     (gamma, lam), *_ = np.linalg.lstsq(a, e, rcond=None)
     residuals = e - a @ np.array([gamma, lam])
     total = np.sum((e - e.mean()) ** 2)
-    return {"Gamma": gamma, "lambda": lam, "residuals": residuals,
+    se = standard_errors(a, residuals)
+    return {"Gamma": gamma, "lambda": lam, "residuals": residuals, "se": se,
             "rms": float(np.sqrt(np.mean(residuals ** 2))),
             "R2": float(1.0 - np.sum(residuals ** 2) / total) if total > 0 else 1.0}
+
+
+def fit_curved(p_mpa, e):
+    """Two curved critical state lines, each linear in its own coordinates, with their rms residuals:
+    log e = log e_1 - b log(p'/1 kPa) (a straight line in log e - log p', de Bono & McDowell 2018) and
+    e = e_Gamma - lambda_c (p'/p_a)^0.7 (Li & Wang 1998, p_a = 101 kPa)."""
+    p = np.asarray(p_mpa) * 1e6
+    e = np.asarray(e)
+    a = np.column_stack([np.ones_like(p), -np.log(p / P_REF)])
+    (log_e1, b), *_ = np.linalg.lstsq(a, np.log(e), rcond=None)
+    power = np.exp(log_e1) * (p / P_REF) ** (-b)
+    a2 = np.column_stack([np.ones_like(p), -(p / 101e3) ** 0.7])
+    (e_gamma, lam_c), *_ = np.linalg.lstsq(a2, e, rcond=None)
+    li_wang = a2 @ np.array([e_gamma, lam_c])
+    return {"e1": float(np.exp(log_e1)), "b": b, "rms_power": float(np.sqrt(np.mean((e - power) ** 2))),
+            "e_gamma": e_gamma, "lambda_c": lam_c, "rms_li_wang": float(np.sqrt(np.mean((e - li_wang) ** 2)))}
 
 
 def fit_plane(p_mpa, ig, e):
@@ -105,6 +136,7 @@ def fit_plane(p_mpa, ig, e):
     residuals = e - a @ coefficients
     total = np.sum((e - e.mean()) ** 2)
     return {"Gamma0": coefficients[0], "lambda": coefficients[1], "beta": coefficients[2], "rank": int(rank),
+            "se": standard_errors(a, residuals),
             "residuals": residuals, "rms": float(np.sqrt(np.mean(residuals ** 2))),
             "R2": float(1.0 - np.sum(residuals ** 2) / total) if total > 0 else 1.0}
 
@@ -160,6 +192,7 @@ def fits(tests):
                               ("loose", [t for t in group if t["sample"] == "loose"]), ("both", group)):
             if len({t["p0_MPa"] for t in members}) >= 2:
                 result["lines"][name] = fit_line([t["p_cs_MPa"] for t in members], [t["e_cs"] for t in members])
+                result["lines"][name].update(fit_curved([t["p_cs_MPa"] for t in members], [t["e_cs"] for t in members]))
         if len(group) >= 4:
             result["plane"] = fit_plane([t["p_cs_MPa"] for t in group], [t["IG_cs"] for t in group],
                                         [t["e_cs"] for t in group])
@@ -183,22 +216,34 @@ def markdown(tests, fitted, window):
                         else "%.0f wall" % t["seconds"]))
     lines += ["", "(dilatancy: -d eps_v / d eps_a over the window, eps_v compression positive: > 0 dilating, < 0 "
               "contracting, 0 at a critical state)", "", "### Critical state lines e_cs = Gamma - lambda ln(p'/1 kPa)", "",
-              "| variant | samples | tests | Gamma | lambda | R^2 | rms residual |", "|---|---|---|---|---|---|---|"]
+              "| variant | samples | tests | Gamma | lambda | R^2 | rms residual | s.e. Gamma | s.e. lambda |",
+              "|---|---|---|---|---|---|---|---|---|"]
     for variant, f in fitted.items():
         for name, line in f["lines"].items():
             count = len([t for t in f["tests"] if name == "both" or t["sample"] == name])
-            lines.append("| %s | %s | %d | %.4f | %.4f | %.3f | %.4f |"
-                         % (variant, name, count, line["Gamma"], line["lambda"], line["R2"], line["rms"]))
+            lines.append("| %s | %s | %d | %.4f | %.4f | %.3f | %.4f | %.4f | %.4f |"
+                         % (variant, name, count, line["Gamma"], line["lambda"], line["R2"], line["rms"], *line["se"]))
+    lines += ["", "### Curved critical state lines: log e_cs = log e_1 - b log(p'/1 kPa) and "
+              "e_cs = e_Gamma - lambda_c (p'/p_a)^0.7", "",
+              "| variant | samples | e_1 | b | rms residual | e_Gamma | lambda_c | rms residual | rms of the straight line |",
+              "|---|---|---|---|---|---|---|---|---|"]
+    for variant, f in fitted.items():
+        for name, line in f["lines"].items():
+            lines.append("| %s | %s | %.4f | %.4f | %.4f | %.4f | %.4f | %.4f | %.4f |"
+                         % (variant, name, line["e1"], line["b"], line["rms_power"], line["e_gamma"], line["lambda_c"],
+                            line["rms_li_wang"], line["rms"]))
     lines += ["", "### Critical state plane e_cs = Gamma_0 - lambda ln(p'/1 kPa) - beta I_G", "",
-              "| variant | tests | Gamma_0 | lambda | beta | R^2 | rms residual | rms of the single line |",
-              "|---|---|---|---|---|---|---|---|"]
+              "| variant | tests | Gamma_0 | lambda | beta | R^2 | rms residual | rms of the single line | "
+              "s.e. Gamma_0 | s.e. lambda | s.e. beta | I_G range |",
+              "|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for variant, f in fitted.items():
         if "plane" in f:
             pl = f["plane"]
             single = f["lines"].get("both", {"rms": float("nan")})["rms"]
-            lines.append("| %s | %d | %.4f | %.4f | %.4f | %.3f | %.4f | %.4f |"
+            ig = [t["IG_cs"] for t in f["tests"]]
+            lines.append("| %s | %d | %.4f | %.4f | %.4f | %.3f | %.4f | %.4f | %.4f | %.4f | %.4f | %.3f - %.3f |"
                          % (variant, len(f["tests"]), pl["Gamma0"], pl["lambda"], pl["beta"], pl["R2"], pl["rms"],
-                            single))
+                            single, *pl["se"], min(ig), max(ig)))
     lines += ["", "### Residuals of the plane", "", "| variant | sample | p'_0 (MPa) | e_cs | plane | residual |",
               "|---|---|---|---|---|---|"]
     for variant, f in fitted.items():
@@ -233,6 +278,9 @@ def figures(tests, fitted, out):
         for name, line in fitted[variant]["lines"].items():
             ax.plot(p, line["Gamma"] - line["lambda"] * np.log(p * 1e6 / P_REF), {"dense": "k-", "loose": "k--",
                     "both": "r:"}[name], lw=1, label="CSL %s: %.3f - %.4f ln p'" % (name, line["Gamma"], line["lambda"]))
+            if name == "both":
+                ax.plot(p, line["e_gamma"] - line["lambda_c"] * (p * 1e6 / 101e3) ** 0.7, "-.", color="grey", lw=1,
+                        label="both: %.3f - %.4f (p'/p_a)^0.7" % (line["e_gamma"], line["lambda_c"]))
         ax.set_xscale("log")
         ax.set_xlabel("p' (MPa)")
         ax.set_ylabel("void ratio e")

@@ -194,9 +194,11 @@ def case_fit_fixture(liggghts, work):
     fit = open(os.path.join(work, "fit", "fit.md")).read()
     check(re.search(r"^\| rotation0 \| dense \| 0.5 \|.* \| 305000 \| 11 \|$", fit, re.M) is not None,
           "fit.md gives each test's steps and its CPU time (not the wall-clock time)")
-    plane = re.search(r"^\| rotation0 \| 8 \| (\S+) \| (\S+) \| (\S+) \| (\S+) \| (\S+) \| (\S+) \|$", fit, re.M)
+    plane = re.search(r"^\| rotation0 \| 8 \| (\S+) \| (\S+) \| (\S+) \| (\S+) \| (\S+) \| (\S+) \| (\S+) \| (\S+) "
+                      r"\| (\S+) \|", fit, re.M)
     check(plane is not None, "fit.md has the plane's row")
-    gamma0, lam, beta, r2, rms, single = map(float, plane.groups())
+    gamma0, lam, beta, r2, rms, single, *errors = map(float, plane.groups())
+    check(max(errors) < 1e-3, "standard errors of an exact plane: %s" % errors)
     check(abs(gamma0 - GAMMA0) < 1e-3 and abs(lam - LAMBDA) < 1e-4 and abs(beta - BETA) < 1e-3 and rms < 1e-5,
           "plane: Gamma_0 %.4f, lambda %.4f, beta %.4f, rms %.1e (built with %g, %g, %g)"
           % (gamma0, lam, beta, rms, GAMMA0, LAMBDA, BETA))
@@ -218,6 +220,16 @@ def case_fit_fixture(liggghts, work):
     row = re.search(r"^\| rotation0 \| dense \| 5 \| \S+ \| \S+ \| (\S+) \|$", fit, re.M)
     shifted = float(row.group(1)) if row else float("nan")
     check(0.006 < shifted < 0.01, "the shifted test's residual is %+.4f (0.01 shared with the refitted plane)" % shifted)
+    # the curved lines recover curves built on their own forms (the fit module, under Debian's numpy)
+    probe = ("import sys; sys.path.insert(0, %r); import critical_state as c, numpy as np; p = np.array([0.2, 1, 4, 9, 30]); "
+             "a = c.fit_curved(p, 0.9 * (p * 1e3) ** -0.08); b = c.fit_curved(p, 0.6 - 0.006 * (p * 1e6 / 101e3) ** 0.7); "
+             "print(a['e1'], a['b'], a['rms_power'], b['e_gamma'], b['lambda_c'], b['rms_li_wang'])"
+             % os.path.dirname(FIT))
+    values = [float(v) for v in subprocess.run(["/usr/bin/python3", "-c", probe], stdout=subprocess.PIPE,
+                                               universal_newlines=True, check=True).stdout.split()]
+    expected = [0.9, 0.08, 0.0, 0.6, 0.006, 0.0]
+    check(all(abs(v - x) < 1e-9 for v, x in zip(values, expected)),
+          "curved lines: e_1, b, rms and e_Gamma, lambda_c, rms %s (built with %s)" % (values, expected))
     for name in ("critical_state_e_lnp.png", "critical_state_IG_p.png", "critical_state_strain.png"):
         path = os.path.join(work, "fit", "figures", name)
         check(os.path.getsize(path) > 10000, "%s drawn" % name)
