@@ -36,6 +36,8 @@ import sys
 
 import numpy as np
 
+KEPT_FOURTEEN = 0.52386  # share of a mother's volume its fourteen fragments keep (doc/fix_crush.txt)
+STATE = re.compile(r"^STATE at \S+ MPa: \S+ particles, \S+ events, porosity (\S+),", re.M)
 FOLDER_NAME = re.compile(r"^(dense|loose)_([0-9.]+)MPa(?:_(sigma3|p))?(?:_s([0-9]+))?$")
 P_REF = 1e3  # Pa: ln(p'/1 kPa)
 
@@ -95,6 +97,48 @@ def standard_errors(a, residuals):
         return np.sqrt(np.abs(np.diag(s2 * np.linalg.inv(a.T @ a))))
     except np.linalg.LinAlgError:
         return np.full(k, np.inf)
+
+
+def lens_volume(x, r):
+    """Total volume of the lenses where spheres (centres x, radii r) overlap: Hertzian overlaps stand
+    for the grains' elastic flattening, and the decks count their volume twice as solid."""
+    total = 0.0
+    for start in range(0, len(r), 500):
+        d = np.linalg.norm(x[start:start + 500, None, :] - x[None, :, :], axis=2)
+        r1, r2 = r[start:start + 500, None], r[None, :]
+        index = np.arange(start, min(start + 500, len(r)))[:, None] < np.arange(len(r))[None, :]
+        touch = index & (d < r1 + r2) & (d > 0)
+        d, r1, r2 = d[touch], np.broadcast_to(r1, touch.shape)[touch], np.broadcast_to(r2, touch.shape)[touch]
+        total += float(np.sum(np.pi * (r1 + r2 - d) ** 2 * (d * d + 2 * d * (r1 + r2) - 3 * (r1 - r2) ** 2) / (12 * d)))
+    return total
+
+
+def without_overlaps(folder):
+    """The void ratio at the end of shearing as the decks count it (removed volume as solid) and with
+    the lens volume of the particles' overlaps taken out of the solid, and that volume's share of the
+    solid, from the final dump, the event log and the STATE line; None without them."""
+    dumps = glob.glob(os.path.join(folder, "dump_T*_sheared.liggghts"))
+    logs = glob.glob(os.path.join(folder, "events_T*.csv"))
+    screen = os.path.join(folder, "screen.txt")
+    if not (dumps and logs and os.path.exists(screen)):
+        return None
+    states = STATE.findall(open(screen).read())
+    if not states:
+        return None
+    n = float(states[-1])
+    with open(dumps[0]) as f:
+        lines = f.read().splitlines()
+    count, columns = int(lines[3]), lines[8].split()[2:]
+    data = np.array([[float(v) for v in line.split()] for line in lines[9:9 + count]])
+    x = data[:, [columns.index(c) for c in ("x", "y", "z")]]
+    r = data[:, columns.index("radius")]
+    with open(logs[0]) as f:
+        mothers = np.array([float(row["diameter"]) for row in csv.DictReader(f)])
+    solid = float(np.sum(4.0 / 3.0 * np.pi * r ** 3)) + (1 - KEPT_FOURTEEN) * float(np.sum(np.pi / 6 * mothers ** 3))
+    share = lens_volume(x, r) / solid
+    # V = solid / (1 - n); true solid = solid (1 - share)
+    return {"e_end": n / (1 - n), "e_end_no_overlap": (1 - (1 - n) * (1 - share)) / ((1 - n) * (1 - share)),
+            "overlap_share": share}
 
 
 def fit_line(p_mpa, e):
@@ -162,6 +206,8 @@ def collect(folders, window):
                 path_s = os.path.join(folder, key + ".txt")
                 info[key] = float(open(path_s).read()) if os.path.exists(path_s) else float("nan")
             info["steps"] = int(h["step"][-1] - h["step"][0])
+            info.update(without_overlaps(folder) or {"e_end": float("nan"), "e_end_no_overlap": float("nan"),
+                                                     "overlap_share": float("nan")})
             info["history"] = h
             info["folder"] = folder
             tests.append(info)
@@ -170,7 +216,7 @@ def collect(folders, window):
 
 
 COLUMNS = ["variant", "sample", "p0_MPa", "path", "seed", "e0", "IG0", "M_peak", "eps_peak", "phi_peak",
-           "eps_end", "p_cs_MPa", "e_cs", "M_cs", "phi_cs", "IG_cs", "dilatancy_end", "events_shearing",
+           "eps_end", "p_cs_MPa", "e_cs", "M_cs", "phi_cs", "IG_cs", "dilatancy_end", "e_end", "overlap_share", "e_end_no_overlap", "events_shearing",
            "particles_end", "steps", "seconds", "cpu_seconds"]
 
 
@@ -193,6 +239,13 @@ def fits(tests):
             if len({t["p0_MPa"] for t in members}) >= 2:
                 result["lines"][name] = fit_line([t["p_cs_MPa"] for t in members], [t["e_cs"] for t in members])
                 result["lines"][name].update(fit_curved([t["p_cs_MPa"] for t in members], [t["e_cs"] for t in members]))
+        clean = [t for t in group if t["e_end_no_overlap"] == t["e_end_no_overlap"]]
+        if len({t["p0_MPa"] for t in clean}) >= 2:
+            # the void ratio at the end with the overlaps' volume taken out of the solid
+            result["lines"]["both, overlaps removed"] = fit_line([t["p_cs_MPa"] for t in clean],
+                                                                 [t["e_end_no_overlap"] for t in clean])
+            result["lines"]["both, overlaps removed"].update(
+                fit_curved([t["p_cs_MPa"] for t in clean], [t["e_end_no_overlap"] for t in clean]))
         if len(group) >= 4:
             result["plane"] = fit_plane([t["p_cs_MPa"] for t in group], [t["IG_cs"] for t in group],
                                         [t["e_cs"] for t in group])
@@ -203,15 +256,16 @@ def fits(tests):
 def markdown(tests, fitted, window):
     lines = ["### Critical states (mean over the last %g of axial strain)" % window, "",
              "| variant | sample | p'_0 (MPa) | path | seed | e_0 | I_G,0 | peak q/p (at eps_a) | phi_peak | "
-             "p'_cs (MPa) | e_cs | q/p cs | phi_cs | I_G,cs | dilatancy at end | events in shearing | "
-             "particles | steps | CPU s |",
-             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+             "p'_cs (MPa) | e_cs | q/p cs | phi_cs | I_G,cs | dilatancy at end | overlaps / solid | "
+             "e at end, overlaps removed | events in shearing | particles | steps | CPU s |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for t in tests:
         lines.append("| %s | %s | %g | %s | %s | %.3f | %.3f | %.3f (%.1f%%) | %.1f | %.3g | %.3f | %.3f | %.1f | "
-                     "%.3f | %.3f | %d | %d | %d | %s |"
+                     "%.3f | %.3f | %.4f | %.3f | %d | %d | %d | %s |"
                      % (t["variant"], t["sample"], t["p0_MPa"], t["path"], t["seed"] or "-", t["e0"], t["IG0"],
                         t["M_peak"], 100 * t["eps_peak"], t["phi_peak"], t["p_cs_MPa"], t["e_cs"], t["M_cs"],
-                        t["phi_cs"], t["IG_cs"], t["dilatancy_end"], t["events_shearing"], t["particles_end"],
+                        t["phi_cs"], t["IG_cs"], t["dilatancy_end"], t["overlap_share"], t["e_end_no_overlap"],
+                        t["events_shearing"], t["particles_end"],
                         t["steps"], "%.0f" % t["cpu_seconds"] if t["cpu_seconds"] == t["cpu_seconds"]
                         else "%.0f wall" % t["seconds"]))
     lines += ["", "(dilatancy: -d eps_v / d eps_a over the window, eps_v compression positive: > 0 dilating, < 0 "
@@ -220,7 +274,7 @@ def markdown(tests, fitted, window):
               "|---|---|---|---|---|---|---|---|---|"]
     for variant, f in fitted.items():
         for name, line in f["lines"].items():
-            count = len([t for t in f["tests"] if name == "both" or t["sample"] == name])
+            count = len([t for t in f["tests"] if name.startswith("both") or t["sample"] == name])
             lines.append("| %s | %s | %d | %.4f | %.4f | %.3f | %.4f | %.4f | %.4f |"
                          % (variant, name, count, line["Gamma"], line["lambda"], line["R2"], line["rms"], *line["se"]))
     lines += ["", "### Curved critical state lines: log e_cs = log e_1 - b log(p'/1 kPa) and "
@@ -276,6 +330,8 @@ def figures(tests, fitted, out):
                     mfc="none" if t["sample"] == "loose" else colour[t["p0_MPa"]])
         p = np.logspace(np.log10(min(pressures) / 2), np.log10(max(t["p_cs_MPa"] for t in tests) * 1.5), 50)
         for name, line in fitted[variant]["lines"].items():
+            if name not in ("dense", "loose", "both"):
+                continue
             ax.plot(p, line["Gamma"] - line["lambda"] * np.log(p * 1e6 / P_REF), {"dense": "k-", "loose": "k--",
                     "both": "r:"}[name], lw=1, label="CSL %s: %.3f - %.4f ln p'" % (name, line["Gamma"], line["lambda"]))
             if name == "both":
