@@ -15,16 +15,18 @@ the CPU time, or the wall-clock time where there is none). For each test, from i
     (triaxial compression);
   - the peak q/p and its axial strain, e and I_G at the start of shearing, the crushing events during
     shearing;
-and fits, for each variant:
+and fits, for each variant and for rotation0 and normal together (one contact law, two gradings):
   - the critical state line e_cs = Gamma - lambda ln(p'/1 kPa) of each sample (dense, loose) and of
     both together, and two curved lines through the same points (fit_curved);
   - the critical state plane e_cs = Gamma_0 - lambda ln(p'/1 kPa) - beta I_G of both samples together,
-    with the residuals of each test;
+    and the curved plane e_cs = e_Gamma0 - lambda_c (p'/p_a)^0.7 - beta I_G, with the residuals of each
+    test;
 each coefficient with its standard error (a plane over a narrow range of I_G cannot separate beta).
 Writes DIR/critical_states.csv (a row a test), DIR/fit.md (the tables of doc/critical_state.md) and
 the figures DIR/figures/critical_state_e_lnp.png (e against ln p', every test's path and critical
 state, the lines), critical_state_IG_p.png (I_G against p' through compression and shearing, the
-critical states) and critical_state_strain.png (q/p and e against axial strain).
+critical states), critical_state_plane.png (each plane seen edge-on: e_cs + lambda ln p' against I_G)
+and critical_state_strain.png (q/p and e against axial strain).
 """
 import argparse
 import csv
@@ -185,6 +187,19 @@ def fit_plane(p_mpa, ig, e):
             "R2": float(1.0 - np.sum(residuals ** 2) / total) if total > 0 else 1.0}
 
 
+def fit_plane_curved(p_mpa, ig, e):
+    """e_Gamma0, lambda_c, beta of e = e_Gamma0 - lambda_c (p'/p_a)^0.7 - beta I_G (Li & Wang's curved
+    line shifted by the grading) and the residuals."""
+    x = (np.asarray(p_mpa) * 1e6 / 101e3) ** 0.7
+    e = np.asarray(e)
+    a = np.column_stack([np.ones_like(x), -x, -np.asarray(ig)])
+    coefficients, *_ = np.linalg.lstsq(a, e, rcond=None)
+    residuals = e - a @ coefficients
+    return {"e_gamma0": coefficients[0], "lambda_c": coefficients[1], "beta": coefficients[2],
+            "residuals": residuals, "rms": float(np.sqrt(np.mean(residuals ** 2))),
+            "se": standard_errors(a, residuals)}
+
+
 def collect(folders, window):
     tests = []
     for top in folders:
@@ -228,11 +243,25 @@ def write_csv(tests, path):
             w.writerow([t[c] if isinstance(t[c], str) else "%.6g" % t[c] for c in COLUMNS])
 
 
+POOLED = ("rotation0", "normal")  # one contact law, two strength readings: two gradings at one p'
+
+
+def groups(tests):
+    """The groups fitted: each variant's tests on the sigma3 path, and those of rotation0 and normal
+    together (grains that do not rotate, with and without the zero-strength sixth: the gradings
+    differ by what broke at the first load, the plane's test)."""
+    out = [(v, [t for t in tests if t["variant"] == v and t["path"] == "sigma3"])
+           for v in sorted({t["variant"] for t in tests})]
+    pooled = [t for t in tests if t["variant"] in POOLED and t["path"] == "sigma3"]
+    if {t["variant"] for t in pooled} == set(POOLED):
+        out.append((" + ".join(POOLED), pooled))
+    return [(name, group) for name, group in out if group]
+
+
 def fits(tests):
-    """Per variant (tests on the sigma3 path): the line of each sample and of both, and the plane."""
+    """Per group (groups()): the line of each sample and of both, curved lines, and the plane."""
     out = {}
-    for variant in sorted({t["variant"] for t in tests}):
-        group = [t for t in tests if t["variant"] == variant and t["path"] == "sigma3"]
+    for variant, group in groups(tests):
         result = {"tests": group, "lines": {}}
         for name, members in (("dense", [t for t in group if t["sample"] == "dense"]),
                               ("loose", [t for t in group if t["sample"] == "loose"]), ("both", group)):
@@ -249,6 +278,8 @@ def fits(tests):
         if len(group) >= 4:
             result["plane"] = fit_plane([t["p_cs_MPa"] for t in group], [t["IG_cs"] for t in group],
                                         [t["e_cs"] for t in group])
+            result["curved_plane"] = fit_plane_curved([t["p_cs_MPa"] for t in group], [t["IG_cs"] for t in group],
+                                                      [t["e_cs"] for t in group])
         out[variant] = result
     return out
 
@@ -298,13 +329,23 @@ def markdown(tests, fitted, window):
             lines.append("| %s | %d | %.4f | %.4f | %.4f | %.3f | %.4f | %.4f | %.4f | %.4f | %.4f | %.3f - %.3f |"
                          % (variant, len(f["tests"]), pl["Gamma0"], pl["lambda"], pl["beta"], pl["R2"], pl["rms"],
                             single, *pl["se"], min(ig), max(ig)))
-    lines += ["", "### Residuals of the plane", "", "| variant | sample | p'_0 (MPa) | e_cs | plane | residual |",
-              "|---|---|---|---|---|---|"]
+    lines += ["", "### Curved critical state plane e_cs = e_Gamma0 - lambda_c (p'/p_a)^0.7 - beta I_G", "",
+              "| variant | tests | e_Gamma0 | lambda_c | beta | rms residual | s.e. e_Gamma0 | s.e. lambda_c | s.e. beta |",
+              "|---|---|---|---|---|---|---|---|---|"]
+    for variant, f in fitted.items():
+        if "curved_plane" in f:
+            cp = f["curved_plane"]
+            lines.append("| %s | %d | %.4f | %.5f | %.4f | %.4f | %.4f | %.5f | %.4f |"
+                         % (variant, len(f["tests"]), cp["e_gamma0"], cp["lambda_c"], cp["beta"], cp["rms"], *cp["se"]))
+    lines += ["", "### Residuals of the plane", "",
+              "| group | variant | sample | p'_0 (MPa) | I_G,cs | e_cs | plane | residual | curved plane | residual |",
+              "|---|---|---|---|---|---|---|---|---|---|"]
     for variant, f in fitted.items():
         if "plane" in f:
-            for t, r in zip(f["tests"], f["plane"]["residuals"]):
-                lines.append("| %s | %s | %g | %.4f | %.4f | %+.4f |" % (variant, t["sample"], t["p0_MPa"], t["e_cs"],
-                                                                     t["e_cs"] - r, r))
+            for t, r, rc in zip(f["tests"], f["plane"]["residuals"], f["curved_plane"]["residuals"]):
+                lines.append("| %s | %s | %s | %g | %.4f | %.4f | %.4f | %+.4f | %.4f | %+.4f |"
+                             % (variant, t["variant"], t["sample"], t["p0_MPa"], t["IG_cs"], t["e_cs"], t["e_cs"] - r, r,
+                                t["e_cs"] - rc, rc))
     return "\n".join(lines) + "\n"
 
 
@@ -360,6 +401,26 @@ def figures(tests, fitted, out):
         ax.set_title("%s: compression and shearing (markers: critical state)" % variant, fontsize=9)
     fig.tight_layout()
     written.append(os.path.join(out, "critical_state_IG_p.png"))
+    fig.savefig(written[-1], dpi=120)
+    plt.close(fig)
+
+    planes = [(name, f) for name, f in fitted.items() if "plane" in f]
+    fig, axes = plt.subplots(1, len(planes), figsize=(5.5 * len(planes), 4.5), squeeze=False)
+    for ax, (name, f) in zip(axes[0], planes):
+        pl = f["plane"]
+        # e_cs + lambda ln(p'/kPa) against I_G: the plane seen edge-on, a line Gamma_0 - beta I_G
+        for t in f["tests"]:
+            ax.plot(t["IG_cs"], t["e_cs"] + pl["lambda"] * np.log(t["p_cs_MPa"] * 1e6 / P_REF), marker[t["sample"]],
+                    color=colour[t["p0_MPa"]], mfc="none" if t["sample"] == "loose" else colour[t["p0_MPa"]])
+        ig = np.linspace(min(t["IG_cs"] for t in f["tests"]) - 0.01, max(t["IG_cs"] for t in f["tests"]) + 0.01, 10)
+        ax.plot(ig, pl["Gamma0"] - pl["beta"] * ig, "k-", lw=1,
+                label="%.3f - %.3f I_G (lambda %.4f)" % (pl["Gamma0"], pl["beta"], pl["lambda"]))
+        ax.set_xlabel("grading index I_G at the critical state")
+        ax.set_ylabel("e_cs + lambda ln(p'/1 kPa)")
+        ax.set_title(name, fontsize=9)
+        ax.legend(fontsize=7)
+    fig.tight_layout()
+    written.append(os.path.join(out, "critical_state_plane.png"))
     fig.savefig(written[-1], dpi=120)
     plt.close(fig)
 

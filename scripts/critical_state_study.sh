@@ -10,7 +10,8 @@
 # zero strength, doc/results.md), sample dense or loose (in.prepare with friction 0.5), p0 the cell pressure in MPa,
 # path sigma3 (constant cell pressure, default) or p (constant p'), seed (the sample's and the
 # strengths', default the decks' 15485863). Default: the cases of doc/critical_state.md: rotation0 at
-# p0 = 0.1 0.5 2 5 10 20 50 MPa, rolling and normal at 2 10 50 MPa, each dense and loose, path sigma3;
+# p0 = 0.1 0.5 2 5 10 20 50 MPa, normal at the same, rolling at 2 10 50 MPa, each dense and loose,
+# path sigma3;
 # constant p' (path p) for rotation0 at 2 and 10 MPa. The case "fit" only refits and redraws from the
 # cases already run.
 # Environment: JOBS (tests run at once, one rank each; default 2), LIGGGHTS (build/liggghts),
@@ -64,8 +65,8 @@ if [ "${1:-}" = --one ]; then run_case "$2"; exit; fi
 cases=${*:-}
 if [ -z "$cases" ]; then
   for sample in dense loose; do
-    for p0 in 0.1 0.5 2 5 10 20 50; do cases+=" rotation0:$sample:$p0"; done
-    for p0 in 2 10 50; do cases+=" rolling:$sample:$p0 normal:$sample:$p0"; done
+    for p0 in 0.1 0.5 2 5 10 20 50; do cases+=" rotation0:$sample:$p0 normal:$sample:$p0"; done
+    for p0 in 2 10 50; do cases+=" rolling:$sample:$p0"; done
     for p0 in 2 10; do cases+=" rotation0:$sample:$p0:p"; done
   done
 fi

@@ -217,25 +217,30 @@ def case_fit_fixture(liggghts, work):
     subprocess.run(["/usr/bin/python3", FIT, "--out", os.path.join(work, "fit2"), "--no-figures", study],
                    stdout=subprocess.DEVNULL, check=True)
     fit = open(os.path.join(work, "fit2", "fit.md")).read()
-    row = re.search(r"^\| rotation0 \| dense \| 5 \| \S+ \| \S+ \| (\S+) \|$", fit, re.M)
+    row = re.search(r"^\| rotation0 \| rotation0 \| dense \| 5 \| \S+ \| \S+ \| \S+ \| (\S+) \|", fit, re.M)
     shifted = float(row.group(1)) if row else float("nan")
     check(0.006 < shifted < 0.01, "the shifted test's residual is %+.4f (0.01 shared with the refitted plane)" % shifted)
     # the curved lines recover curves built on their own forms (the fit module, under Debian's numpy)
     probe = ("import sys; sys.path.insert(0, %r); import critical_state as c, numpy as np; p = np.array([0.2, 1, 4, 9, 30]); "
              "a = c.fit_curved(p, 0.9 * (p * 1e3) ** -0.08); b = c.fit_curved(p, 0.6 - 0.006 * (p * 1e6 / 101e3) ** 0.7); "
              "v = c.lens_volume(np.array([[0, 0, 0], [1.5, 0, 0], [10, 0, 0], [10, 1.2, 0.]]), np.array([1, 1, 0.5, 1.])); "
-             "print(a['e1'], a['b'], a['rms_power'], b['e_gamma'], b['lambda_c'], b['rms_li_wang'], v)"
+             "ig = np.array([0.74, 0.85, 0.75, 0.86, 0.8]); "
+             "cp = c.fit_plane_curved(p, ig, 2.0 - 0.004 * (p * 1e6 / 101e3) ** 0.7 - 1.5 * ig); "
+             "print(a['e1'], a['b'], a['rms_power'], b['e_gamma'], b['lambda_c'], b['rms_li_wang'], v, "
+             "cp['e_gamma0'], cp['lambda_c'], cp['beta'], cp['rms'])"
              % os.path.dirname(FIT))
     values = [float(v) for v in subprocess.run(["/usr/bin/python3", "-c", probe], stdout=subprocess.PIPE,
                                                universal_newlines=True, check=True).stdout.split()]
     # two unit spheres 1.5 apart: pi (4 r + d)(2 r - d)^2 / 12; a sphere of 0.5 and one of 1 at 1.2:
     # pi (r1 + r2 - d)^2 (d^2 + 2 d (r1 + r2) - 3 (r1 - r2)^2) / (12 d)
     lens = math.pi * 5.5 * 0.25 / 12 + math.pi * 0.09 * (1.44 + 3.6 - 0.75) / 14.4
-    expected = [0.9, 0.08, 0.0, 0.6, 0.006, 0.0, lens]
+    expected = [0.9, 0.08, 0.0, 0.6, 0.006, 0.0, lens, 2.0, 0.004, 1.5, 0.0]
     check(all(abs(v - x) < 1e-9 for v, x in zip(values, expected)),
-          "curved lines: e_1, b, rms and e_Gamma, lambda_c, rms, and the overlaps' lens volume %s (expected %s)"
+          "curved lines: e_1, b, rms and e_Gamma, lambda_c, rms; the overlaps' lens volume; the curved plane's "
+          "e_Gamma0, lambda_c, beta, rms: %s (expected %s)"
           % (values, expected))
-    for name in ("critical_state_e_lnp.png", "critical_state_IG_p.png", "critical_state_strain.png"):
+    for name in ("critical_state_e_lnp.png", "critical_state_IG_p.png", "critical_state_plane.png",
+                 "critical_state_strain.png"):
         path = os.path.join(work, "fit", "figures", name)
         check(os.path.getsize(path) > 10000, "%s drawn" % name)
 
