@@ -17,7 +17,7 @@ import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from liggghts_run import check, read_dump, run_deck, variants  # noqa: E402
+from liggghts_run import check, each_rank_count, edited_deck, read_dump, run_deck, variants  # noqa: E402
 from liggghts_run import main as test_main  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
@@ -122,6 +122,29 @@ def case_constant_p(liggghts, work):
     check(last["q_over_p"] > 0.5 and last["sigma_x"] < 0.85 * CELL and last["sigma_z"] > 1.3 * CELL,
           "q/p %.3f: sigma_x %.3g Pa, sigma_z %.3g Pa, mean %.4g Pa"
           % (last["q_over_p"], last["sigma_x"], last["sigma_z"], last["p"]))
+
+
+@variants(*each_rank_count(1, 2, 3, 4), timeout=300)
+def case_box_grows(liggghts, work, ranks):
+    """The box follows the lateral walls: a box cut 0.06 mm beyond the sample before shearing grows
+    as the walls move out (in.triaxial_box), the grains migrating to the processors of the new box,
+    and none is lost: 1340 grains, unique tags, the walls past the old edge."""
+    ranks = int(ranks)
+    deck = edited_deck(TRIAXIAL, os.path.join(work, "deck"), [(
+        "include         in.triaxial_state\n",
+        "change_box      all x final -0.001 $(f_walls[2]+6e-5) y final -0.001 $(f_walls[4]+6e-5) units box\n"
+        "include         in.triaxial_state\n")], includes=("in.shear_stage",))
+    out = run_deck(liggghts, deck, os.path.join(work, "run"), {"axial_max": 0.01, "checkpoint_every": 0, "vtk": 0},
+                   ranks=ranks)
+    grown = re.findall(r"^BOX grown to x \S+ (\S+) y \S+ (\S+) m: the lateral walls at (\S+) (\S+) m", out, re.M)
+    check(len(grown) >= 1, "the box grew %d time(s) on %d rank(s)" % (len(grown), ranks))
+    xhi, yhi, wx, wy = map(float, grown[0])
+    check(abs(xhi - wx - 1e-3) < 1e-9 or abs(yhi - wy - 1e-3) < 1e-9, "to 1 mm beyond the wall that came near it")
+    rows = read_dump(os.path.join(work, "run", "dump_Tdense2_sheared.liggghts"))[-1][2]
+    tags = [int(r["id"]) for r in rows]
+    check(len(tags) == len(set(tags)) == 1340, "%d grains, every tag unique" % len(tags))
+    history = read_history(os.path.join(work, "run", "history_Tdense2.csv"))
+    check(history[-1]["axial_strain"] >= 0.01, "sheared to %.2f%%" % (100 * history[-1]["axial_strain"]))
 
 
 # The fixture's critical state plane and stress ratio.
