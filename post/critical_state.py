@@ -362,13 +362,17 @@ def figures(tests, fitted, out):
     marker = {"dense": "o", "loose": "s"}
     written = []
 
-    fig, axes = plt.subplots(1, len(variants), figsize=(6 * len(variants), 4.5), squeeze=False)
-    for ax, variant in zip(axes[0], variants):
+    def paths(ax, variant, column, at_cs):
+        """Each test's path of a history column against p' and its critical state (a marker)."""
         for t in (t for t in tests if t["variant"] == variant):
             h = t["history"]
-            ax.plot(h["p"] / 1e6, h["void_ratio"], dash[t["sample"]], color=colour[t["p0_MPa"]], lw=0.7, alpha=0.6)
-            ax.plot(t["p_cs_MPa"], t["e_cs"], marker[t["sample"]], color=colour[t["p0_MPa"]],
+            ax.plot(h["p"] / 1e6, h[column], dash[t["sample"]], color=colour[t["p0_MPa"]], lw=0.7, alpha=0.6)
+            ax.plot(t["p_cs_MPa"], t[at_cs], marker[t["sample"]], color=colour[t["p0_MPa"]],
                     mfc="none" if t["sample"] == "loose" else colour[t["p0_MPa"]])
+
+    fig, axes = plt.subplots(1, len(variants), figsize=(6 * len(variants), 4.5), squeeze=False)
+    for ax, variant in zip(axes[0], variants):
+        paths(ax, variant, "void_ratio", "e_cs")
         p = np.logspace(np.log10(min(pressures) / 2), np.log10(max(t["p_cs_MPa"] for t in tests) * 1.5), 50)
         for name, line in fitted[variant]["lines"].items():
             if name not in ("dense", "loose", "both"):
@@ -390,11 +394,7 @@ def figures(tests, fitted, out):
 
     fig, axes = plt.subplots(1, len(variants), figsize=(6 * len(variants), 4.5), squeeze=False)
     for ax, variant in zip(axes[0], variants):
-        for t in (t for t in tests if t["variant"] == variant):
-            h = t["history"]
-            ax.plot(h["p"] / 1e6, h["I_G"], dash[t["sample"]], color=colour[t["p0_MPa"]], lw=0.7, alpha=0.6)
-            ax.plot(t["p_cs_MPa"], t["IG_cs"], marker[t["sample"]], color=colour[t["p0_MPa"]],
-                    mfc="none" if t["sample"] == "loose" else colour[t["p0_MPa"]])
+        paths(ax, variant, "I_G", "IG_cs")
         ax.set_xscale("log")
         ax.set_xlabel("p' (MPa)")
         ax.set_ylabel("grading index I_G")
