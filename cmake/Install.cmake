@@ -19,9 +19,9 @@ set(_doc "${CMAKE_INSTALL_DATADIR}/doc/liggghts-crush")
 install(PROGRAMS "$<TARGET_FILE:liggghts>" DESTINATION "${CMAKE_INSTALL_BINDIR}" RENAME liggghts-crush
         COMPONENT runtime)
 install(DIRECTORY "${PROJECT_SOURCE_DIR}/examples/" DESTINATION "${_share}/examples" COMPONENT runtime
-        FILES_MATCHING PATTERN "in.*" PATTERN "*.py")
+        FILES_MATCHING PATTERN "in.*" PATTERN "*.py" PATTERN "*.stl")
 install(PROGRAMS "${PROJECT_SOURCE_DIR}/post/plot.py" "${PROJECT_SOURCE_DIR}/post/summary.py"
-                 "${PROJECT_SOURCE_DIR}/post/penetration.py"
+                 "${PROJECT_SOURCE_DIR}/post/penetration.py" "${PROJECT_SOURCE_DIR}/post/critical_state.py"
         DESTINATION "${_share}/post" COMPONENT runtime)
 install(FILES "${PROJECT_SOURCE_DIR}/post/paper.py" DESTINATION "${_share}/post" COMPONENT runtime)
 install(FILES "${PROJECT_SOURCE_DIR}/README.md" DESTINATION "${_doc}" COMPONENT runtime)
