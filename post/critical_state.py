@@ -143,61 +143,65 @@ def without_overlaps(folder):
             "overlap_share": share}
 
 
-def fit_line(p_mpa, e):
-    """Gamma, lambda of e = Gamma - lambda ln(p'/1 kPa), the residuals and R^2."""
-    x = np.log(np.asarray(p_mpa) * 1e6 / P_REF)
-    e = np.asarray(e)
-    a = np.column_stack([np.ones_like(x), -x])
-    (gamma, lam), *_ = np.linalg.lstsq(a, e, rcond=None)
-    residuals = e - a @ np.array([gamma, lam])
-    total = np.sum((e - e.mean()) ** 2)
-    se = standard_errors(a, residuals)
-    return {"Gamma": gamma, "lambda": lam, "residuals": residuals, "se": se,
+def least_squares(columns, y):
+    """Least squares of y on the given columns: the coefficients, residuals, rms residual, R^2 and
+    standard errors."""
+    a = np.column_stack(columns)
+    y = np.asarray(y)
+    coefficients, *_ = np.linalg.lstsq(a, y, rcond=None)
+    residuals = y - a @ coefficients
+    total = np.sum((y - y.mean()) ** 2)
+    return {"coefficients": coefficients, "residuals": residuals, "se": standard_errors(a, residuals),
             "rms": float(np.sqrt(np.mean(residuals ** 2))),
             "R2": float(1.0 - np.sum(residuals ** 2) / total) if total > 0 else 1.0}
+
+
+def log_pressure(p_mpa):
+    return np.log(np.asarray(p_mpa) * 1e6 / P_REF)
+
+
+def li_wang_pressure(p_mpa):
+    return (np.asarray(p_mpa) * 1e6 / 101e3) ** 0.7
+
+
+def fit_line(p_mpa, e):
+    """Gamma, lambda of e = Gamma - lambda ln(p'/1 kPa), the residuals and R^2."""
+    x = log_pressure(p_mpa)
+    fit = least_squares([np.ones_like(x), -x], e)
+    fit["Gamma"], fit["lambda"] = fit["coefficients"]
+    return fit
 
 
 def fit_curved(p_mpa, e):
     """Two curved critical state lines, each linear in its own coordinates, with their rms residuals:
     log e = log e_1 - b log(p'/1 kPa) (a straight line in log e - log p', de Bono & McDowell 2018) and
     e = e_Gamma - lambda_c (p'/p_a)^0.7 (Li & Wang 1998, p_a = 101 kPa)."""
-    p = np.asarray(p_mpa) * 1e6
     e = np.asarray(e)
-    a = np.column_stack([np.ones_like(p), -np.log(p / P_REF)])
-    (log_e1, b), *_ = np.linalg.lstsq(a, np.log(e), rcond=None)
-    power = np.exp(log_e1) * (p / P_REF) ** (-b)
-    a2 = np.column_stack([np.ones_like(p), -(p / 101e3) ** 0.7])
-    (e_gamma, lam_c), *_ = np.linalg.lstsq(a2, e, rcond=None)
-    li_wang = a2 @ np.array([e_gamma, lam_c])
+    x = log_pressure(p_mpa)
+    (log_e1, b) = least_squares([np.ones_like(x), -x], np.log(e))["coefficients"]
+    power = np.exp(log_e1 - b * x)
+    x2 = li_wang_pressure(p_mpa)
+    li_wang = least_squares([np.ones_like(x2), -x2], e)
+    e_gamma, lam_c = li_wang["coefficients"]
     return {"e1": float(np.exp(log_e1)), "b": b, "rms_power": float(np.sqrt(np.mean((e - power) ** 2))),
-            "e_gamma": e_gamma, "lambda_c": lam_c, "rms_li_wang": float(np.sqrt(np.mean((e - li_wang) ** 2)))}
+            "e_gamma": e_gamma, "lambda_c": lam_c, "rms_li_wang": li_wang["rms"]}
 
 
 def fit_plane(p_mpa, ig, e):
     """Gamma_0, lambda, beta of e = Gamma_0 - lambda ln(p'/1 kPa) - beta I_G and the residuals."""
-    x = np.log(np.asarray(p_mpa) * 1e6 / P_REF)
-    e = np.asarray(e)
-    a = np.column_stack([np.ones_like(x), -x, -np.asarray(ig)])
-    coefficients, _, rank, _ = np.linalg.lstsq(a, e, rcond=None)
-    residuals = e - a @ coefficients
-    total = np.sum((e - e.mean()) ** 2)
-    return {"Gamma0": coefficients[0], "lambda": coefficients[1], "beta": coefficients[2], "rank": int(rank),
-            "se": standard_errors(a, residuals),
-            "residuals": residuals, "rms": float(np.sqrt(np.mean(residuals ** 2))),
-            "R2": float(1.0 - np.sum(residuals ** 2) / total) if total > 0 else 1.0}
+    x = log_pressure(p_mpa)
+    fit = least_squares([np.ones_like(x), -x, -np.asarray(ig)], e)
+    fit["Gamma0"], fit["lambda"], fit["beta"] = fit["coefficients"]
+    return fit
 
 
 def fit_plane_curved(p_mpa, ig, e):
     """e_Gamma0, lambda_c, beta of e = e_Gamma0 - lambda_c (p'/p_a)^0.7 - beta I_G (Li & Wang's curved
     line shifted by the grading) and the residuals."""
-    x = (np.asarray(p_mpa) * 1e6 / 101e3) ** 0.7
-    e = np.asarray(e)
-    a = np.column_stack([np.ones_like(x), -x, -np.asarray(ig)])
-    coefficients, *_ = np.linalg.lstsq(a, e, rcond=None)
-    residuals = e - a @ coefficients
-    return {"e_gamma0": coefficients[0], "lambda_c": coefficients[1], "beta": coefficients[2],
-            "residuals": residuals, "rms": float(np.sqrt(np.mean(residuals ** 2))),
-            "se": standard_errors(a, residuals)}
+    x = li_wang_pressure(p_mpa)
+    fit = least_squares([np.ones_like(x), -x, -np.asarray(ig)], e)
+    fit["e_gamma0"], fit["lambda_c"], fit["beta"] = fit["coefficients"]
+    return fit
 
 
 def collect(folders, window):
@@ -258,6 +262,14 @@ def groups(tests):
     return [(name, group) for name, group in out if group]
 
 
+def lines_through(members, column):
+    """The straight and the curved lines through the tests' critical states (p'_cs, column)."""
+    p, e = [t["p_cs_MPa"] for t in members], [t[column] for t in members]
+    line = fit_line(p, e)
+    line.update(fit_curved(p, e))
+    return line
+
+
 def fits(tests):
     """Per group (groups()): the line of each sample and of both, curved lines, and the plane."""
     out = {}
@@ -266,15 +278,11 @@ def fits(tests):
         for name, members in (("dense", [t for t in group if t["sample"] == "dense"]),
                               ("loose", [t for t in group if t["sample"] == "loose"]), ("both", group)):
             if len({t["p0_MPa"] for t in members}) >= 2:
-                result["lines"][name] = fit_line([t["p_cs_MPa"] for t in members], [t["e_cs"] for t in members])
-                result["lines"][name].update(fit_curved([t["p_cs_MPa"] for t in members], [t["e_cs"] for t in members]))
+                result["lines"][name] = lines_through(members, "e_cs")
         clean = [t for t in group if t["e_end_no_overlap"] == t["e_end_no_overlap"]]
         if len({t["p0_MPa"] for t in clean}) >= 2:
             # the void ratio at the end with the overlaps' volume taken out of the solid
-            result["lines"]["both, overlaps removed"] = fit_line([t["p_cs_MPa"] for t in clean],
-                                                                 [t["e_end_no_overlap"] for t in clean])
-            result["lines"]["both, overlaps removed"].update(
-                fit_curved([t["p_cs_MPa"] for t in clean], [t["e_end_no_overlap"] for t in clean]))
+            result["lines"]["both, overlaps removed"] = lines_through(clean, "e_end_no_overlap")
         if len(group) >= 4:
             result["plane"] = fit_plane([t["p_cs_MPa"] for t in group], [t["IG_cs"] for t in group],
                                         [t["e_cs"] for t in group])
