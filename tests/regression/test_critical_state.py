@@ -19,6 +19,8 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from liggghts_run import check, each_rank_count, edited_deck, read_dump, run_deck, variants  # noqa: E402
 from liggghts_run import main as test_main  # noqa: E402
+from test_crush import read_events  # noqa: E402
+from test_fontainebleau import read_history  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 TRIAXIAL = os.path.join(ROOT, "examples", "fontainebleau", "in.triaxial")
@@ -28,16 +30,6 @@ CELL = 2e6
 # at 2 MPa; a faster shear (inertial number about 2e-3) for a short test.
 SHORT = {"crushing": 1, "cell": CELL, "sigma_lim0": 1e9, "settle": 5000, "strain_rate": 100,
          "axial_max": 0.03, "checkpoint_every": 0, "vtk": 0}
-
-
-def read_history(path):
-    with open(path) as f:
-        return [{k: float(v) for k, v in row.items()} for row in csv.DictReader(f)]
-
-
-def read_events(path):
-    with open(path) as f:
-        return list(csv.DictReader(f))
 
 
 def sphere_volume(d):
