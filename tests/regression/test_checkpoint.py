@@ -96,11 +96,16 @@ def read_rows(path):
     return lines[0], lines[1:]
 
 
+def marker_variable(folder, base, name):
+    """A kept variable of the newest checkpoint, as its marker records it."""
+    with open(os.path.join(folder, base + ".last")) as f:
+        rows = [line.split() for line in f if line.strip() and not line.startswith("#")]
+    return float([w for w in rows[-1] if w.startswith(name + "=")][0].split("=")[1])
+
+
 def first_step(folder):
     """The ramp's first step, as the checkpoints keep it (variable first_step in the marker)."""
-    with open(os.path.join(folder, "ckpt_O2.last")) as f:
-        words = [w for line in f if not line.startswith("#") for w in line.split()]
-    return int(float([w for w in words if w.startswith("first_step=")][-1].split("=")[1]))
+    return int(marker_variable(folder, "ckpt_O2", "first_step"))
 
 
 def event_steps(folder):
@@ -203,13 +208,6 @@ def case_resume_triaxial(liggghts, work):
     check("CHECKPOINT resumed from" in out, "resumed from a checkpoint")
     a, b = open(os.path.join(reference, history)).read(), open(os.path.join(folder, history)).read()
     check(a == b and a.count("\n") > 3, "%s identical to the uninterrupted run's (%d lines)" % (history, a.count("\n")))
-
-
-def marker_variable(folder, base, name):
-    """A kept variable of the newest checkpoint, as its marker records it."""
-    with open(os.path.join(folder, base + ".last")) as f:
-        rows = [line.split() for line in f if line.strip() and not line.startswith("#")]
-    return float([w for w in rows[-1] if w.startswith(name + "=")][0].split("=")[1])
 
 
 @variants(timeout=600)
