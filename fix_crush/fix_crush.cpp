@@ -31,6 +31,8 @@
 #include "memory.h"
 #include "modify.h"
 #include "neighbor.h"
+#include "output.h"
+#include "thermo.h"
 #include "pair_gran.h"
 #include "fix_wall_gran.h"
 #include "update.h"
@@ -41,7 +43,8 @@ using namespace FixConst;
 
 namespace {
 
-enum Output { EVENTS = 0, REMOVED_VOLUME = 1, LARGEST_RATIO = 2, REPLACE_SECONDS = 3, CHECKED_STEPS = 4, NOUTPUT = 5 };  // vector
+enum Output { EVENTS = 0, REMOVED_VOLUME = 1, LARGEST_RATIO = 2, REPLACE_SECONDS = 3, CHECKED_STEPS = 4,
+              OUTFLOW_VOLUME = 5, OUTFLOW_PARTICLES = 6, NOUTPUT = 7 };  // vector
 
 crush::CrushSettings parse(Fix *fix, Error *error, int me, int narg, char **arg)
 {
@@ -77,7 +80,8 @@ FixCrush::FixCrush(LAMMPS *lmp, int narg, char **arg) :
   strength_(settings_.distribution, settings_.sigma_lim0, settings_.cv, settings_.weibull_m, settings_.seed),
   nfrag_(static_cast<int>(crush::fragment_layout(settings_.layout, 1.0).size())),
   region_(NULL), fix_data_(NULL), data_id_(NULL), limit_factor_(NULL), irregular_(NULL), log_(NULL),
-  events_total_(0), removed_volume_(0.0), max_ratio_(0.0), local_max_ratio_(0.0), max_ratio_step_(-1),
+  events_total_(0), removed_volume_(0.0), outflow_volume_(0.0), outflow_particles_(0), outflow_reported_(false),
+  max_ratio_(0.0), local_max_ratio_(0.0), max_ratio_step_(-1),
   smallest_fragment_diameter_(0.0), initial_largest_diameter_(0.0), next_tag_(1), replace_seconds_(0.0),
   particle_count_(0), initialized_(false), refresh_needed_(true), recording_(true), box_reference_{0.0, 0.0, 0.0},
   allowed_displacement_(0.0), force_check_(true), check_now_(true), checked_steps_(0), restart_step_(-1),
@@ -180,6 +184,10 @@ void FixCrush::init()
   check_contact_models();
   check_materials();
   check_particles();
+  find_bodies();
+  check_bodies();
+  find_inherited_state();
+  outflow_reported_ = false;
   setup_limit_factors();
   if (!log_opened_) open_log();
   if (settings_.adaptive) find_moving_walls();
@@ -211,15 +219,14 @@ bool FixCrush::breakable(int i) const
 }
 
 // Before the run's first exchange: a particle of the group without a positive, finite size or density
-// has no strength (eq. 10) and no fragments; a particle outside a fixed box would be dropped by that
-// exchange without a word (LIGGGHTS then recounts its particles). The run stops naming the first.
+// has no strength (eq. 10) and no fragments. A particle beyond a fixed boundary is dropped by that
+// exchange: with 'thermo_modify lost error' the run stops here, naming it; otherwise it leaves the
+// books as outflow (setup_pre_exchange). A shrink-wrapped box grows to hold it. The run stops naming
+// the first.
 void FixCrush::check_particles() const
 {
-  auto outside = [this](const double *x) {
-    for (int d = 0; d < 3; d++)
-      if (!domain->periodicity[d] && !(x[d] >= domain->boxlo[d] && x[d] <= domain->boxhi[d])) return true;
-    return false;
-  };
+  const bool lost_error = output->thermo->lost_policy() == Thermo::LOST_ERROR;
+  auto outside = [this, lost_error](const double *x) { return lost_error && leaves_box(x); };
   int first = std::numeric_limits<int>::max();
   for (int i = 0; i < atom->nlocal; i++) {
     const double r = atom->radius[i], rho = atom->density[i];
@@ -234,8 +241,9 @@ void FixCrush::check_particles() const
     char msg[512];
     const double *x = atom->x[i];
     if (outside(x))
-      snprintf(msg, sizeof(msg), "Fix crush (id %s): particle %d lies outside the simulation box, at (%g %g %g): "
-               "LIGGGHTS would drop it silently; keep the particles inside the box", id, first_all, x[0], x[1], x[2]);
+      snprintf(msg, sizeof(msg), "Fix crush (id %s): particle %d lies beyond a fixed boundary of the box, at "
+               "(%g %g %g), and 'thermo_modify lost error' forbids losing it: keep the particles inside the box",
+               id, first_all, x[0], x[1], x[2]);
     else
       snprintf(msg, sizeof(msg), "Fix crush (id %s): particle %d has radius %g m and density %g kg/m^3: both must "
                "be finite and > 0 (set ... diameter, density; create_atoms; read_data)", id, first_all,
@@ -448,16 +456,16 @@ void FixCrush::end_of_step()
   local_max_ratio_ = local_max;
   max_ratio_step_ = -1;  // reduced over processors when output asks for it, not every step
   if (settings_.adaptive) schedule_next_check();
-  // One reduction: the events, and the particle count, so that particles lost through the box
-  // (which LIGGGHTS deletes silently by default) stop the run instead of unbalancing the books.
+  // One reduction: the events, and the particle count. Crushing only adds particles, and the
+  // particles that left the box are counted as they leave (count_outflow): fewer than that means
+  // particles vanished by other means, and the volume books would no longer balance.
   bigint local_counts[2] = {static_cast<bigint>(mothers.size()), atom->nlocal}, counts[2];
   MPI_Allreduce(local_counts, counts, 2, MPI_LMP_BIGINT, MPI_SUM, world);
-  // Crushing only adds particles: fewer than at the last check means particles were lost.
   if (counts[1] < particle_count_) {
-    char msg[320];
-    snprintf(msg, sizeof(msg), "fix crush: " BIGINT_FORMAT " particles were lost during the run (they left the simulation "
-             "box, which LIGGGHTS allows silently): the volume books no longer balance; keep the particles "
-             "inside the box", particle_count_ - counts[1]);
+    char msg[400];
+    snprintf(msg, sizeof(msg), "fix crush: " BIGINT_FORMAT " particles vanished during the run without leaving the box "
+             "(a fix or command deleted them): the volume books no longer balance; fix crush counts only the "
+             "particles that leave through a fixed boundary ('thermo_modify lost')", particle_count_ - counts[1]);
     error->all(FLERR, msg);
   }
   particle_count_ = counts[1];
@@ -490,184 +498,25 @@ std::vector<FixCrush::Event> FixCrush::gather_events(const std::vector<int> &loc
   return events;
 }
 
+// The agreed events are replaced before the exchange moves their fragments (fix_crush_replacement.cpp);
+// then the particles that the exchange will drop beyond a fixed boundary leave the books
+// (fix_crush_outflow.cpp).
 void FixCrush::pre_exchange()
 {
-  if (next_reneighbor != update->ntimestep || pending_.empty()) return;
-  const double start = MPI_Wtime();
-  replace_mothers();
-  replace_seconds_ += MPI_Wtime() - start;
-  pending_.clear();
-  next_reneighbor = -1;
-}
-
-void FixCrush::replace_mothers()
-{
-  // New tags follow every tag in use (and every tag ever given), in the agreed event order.
-  const tagint first = std::max(largest_tag() + 1, next_tag_);
-  if (static_cast<bigint>(first) + static_cast<bigint>(nfrag_) * static_cast<bigint>(pending_.size()) > MAXTAGINT)
-    error->all(FLERR, "fix crush: particle tags would exceed the largest tag LIGGGHTS allows (MAXTAGINT)");
-  log_events(pending_, first);
-
-  const std::vector<std::pair<std::size_t, int>> owned = owned_mothers();
-  const int nlocal_before = atom->nlocal;
-  std::vector<int> mothers;
-  double removed_local = 0.0, smallest = 0.0;
-  for (const auto &event : owned) {
-    const std::size_t k = event.first;
-    const int i = event.second;
-    mothers.push_back(i);
-    removed_local += create_fragments(i, first + nfrag_ * static_cast<tagint>(k), pending_[k].generation + 1);
-    const double d = crush::smallest_fragment_ratio(settings_.layout) * pending_[k].diameter;
-    smallest = smallest == 0.0 ? d : std::min(smallest, d);
+  if (next_reneighbor == update->ntimestep && !pending_.empty()) {
+    const double start = MPI_Wtime();
+    replace_mothers();
+    replace_seconds_ += MPI_Wtime() - start;
+    pending_.clear();
+    next_reneighbor = -1;
   }
-  delete_mothers(mothers);
-
-  // Books: the volume that left the particles is the removed volume, nothing else; and every
-  // event replaced exactly once, counted on all processors (one reduction per event step).
-  double local_sums[3] = {removed_local, static_cast<double>(atom->nlocal - nlocal_before),
-                          static_cast<double>(owned.size())};
-  double sums[3];
-  MPI_Allreduce(local_sums, sums, 3, MPI_DOUBLE, MPI_SUM, world);
-  removed_volume_ += sums[0];
-  double smallest_all = 0.0, big = smallest > 0.0 ? smallest : 1e300;
-  MPI_Allreduce(&big, &smallest_all, 1, MPI_DOUBLE, MPI_MIN, world);
-  if (smallest_all < 1e300)
-    smallest_fragment_diameter_ = smallest_fragment_diameter_ == 0.0 ? smallest_all
-                                                                    : std::min(smallest_fragment_diameter_, smallest_all);
-  events_total_ += static_cast<bigint>(pending_.size());
-  particle_count_ += static_cast<bigint>(nfrag_ - 1) * static_cast<bigint>(pending_.size());
-  check_books(sums[1], sums[2]);
-  next_tag_ = first + nfrag_ * static_cast<tagint>(pending_.size());
-  atom->natoms += static_cast<bigint>(nfrag_ - 1) * static_cast<bigint>(pending_.size());
-
-  atom->nghost = 0;
-  atom->map_init();
-  atom->map_set();
-  // Fragments may lie outside this sub-domain or the periodic box: remap and migrate them.
-  domain->pbc();
-  domain->reset_box();
-  if (irregular_->migrate_check()) irregular_->migrate_atoms();
-  if (settings_.check_tags) check_unique_tags();
-
-  if (settings_.dmin <= 0.0) check_time_step(smallest_radius());
+  count_outflow();
 }
 
-// The agreed events whose mother this processor owns, as (event, local index), all resolved before
-// the first fragment exists. create_atom() appends at nlocal, over the ghost slots, while the atom
-// map still points into them: once fragments are appended, a mother that is only a ghost here maps
-// to an index below the grown nlocal and would be taken as owned, and its fragments created twice.
-std::vector<std::pair<std::size_t, int>> FixCrush::owned_mothers() const
+// The run's setup exchanges atoms too: particles beyond a fixed boundary at a run's start leave there.
+void FixCrush::setup_pre_exchange()
 {
-  std::vector<std::pair<std::size_t, int>> owned;
-  const int nlocal = atom->nlocal;
-  for (std::size_t k = 0; k < pending_.size(); k++) {
-    const int i = atom->map(pending_[k].tag);
-    if (i >= 0 && i < nlocal) owned.emplace_back(k, i);  // else a ghost, or owned by another processor
-  }
-  return owned;
-}
-
-// Always on: each event replaced by exactly one processor, and (fragments - 1) new particles per
-// event. A failure names both numbers and stops the run before a corrupted state is written.
-void FixCrush::check_books(double added, double replaced) const
-{
-  const double events = static_cast<double>(pending_.size());
-  if (replaced == events && added == (nfrag_ - 1) * events) return;
-  char msg[400];
-  snprintf(msg, sizeof(msg), "fix crush: at step " BIGINT_FORMAT " %.0f mothers were replaced and %.0f particles "
-           "added, the books require %.0f and %.0f: particles were lost or duplicated (please report this with "
-           "the deck)", update->ntimestep, replaced, added, events, (nfrag_ - 1) * events);
-  error->all(FLERR, msg);
-}
-
-// The largest tag in use on all processors (0 without particles).
-tagint FixCrush::largest_tag() const
-{
-  int largest = 0, largest_all = 0;  // LIGGGHTS 3.8.0 stores tags as int (atom->tag)
-  for (int i = 0; i < atom->nlocal; i++) largest = std::max(largest, atom->tag[i]);
-  MPI_Allreduce(&largest, &largest_all, 1, MPI_INT, MPI_MAX, world);
-  return largest_all;
-}
-
-// With 'check_tags yes' (tests): every tag in use exactly once over all processors.
-void FixCrush::check_unique_tags() const
-{
-  const tagint maxtag_all = largest_tag();
-  std::vector<int> seen(maxtag_all + 1, 0), seen_all(maxtag_all + 1, 0);
-  for (int i = 0; i < atom->nlocal; i++) seen[atom->tag[i]]++;
-  MPI_Allreduce(seen.data(), seen_all.data(), maxtag_all + 1, MPI_INT, MPI_SUM, world);
-  for (tagint t = 0; t <= maxtag_all; t++)
-    if (seen_all[t] > 1) {
-      char msg[200];
-      snprintf(msg, sizeof(msg), "fix crush (check_tags): tag %d is held by %d particles at step " BIGINT_FORMAT,
-               t, seen_all[t], update->ntimestep);
-      error->all(FLERR, msg);
-    }
-}
-
-// Appends the mother's fragments (the mother is deleted afterwards) and returns the volume they leave out (m^3).
-double FixCrush::create_fragments(int mother, tagint first_tag, int generation)
-{
-  // Copy the mother: creating atoms may reallocate every per-atom array.
-  const int type = atom->type[mother], mask = atom->mask[mother], tag = atom->tag[mother];
-  const tagint image = atom->image[mother];
-  const double R = atom->radius[mother], density = atom->density[mother];
-  double xm[3], vm[3], wm[3];
-  for (int k = 0; k < 3; k++) {
-    xm[k] = atom->x[mother][k];
-    vm[k] = atom->v[mother][k];
-    wm[k] = atom->omega[mother][k];
-  }
-  std::vector<crush::Fragment> fragments;
-  try {
-    fragments = crush::fragment_layout(settings_.layout, R);
-  } catch (const crush::ModelError &e) {
-    particle_error(tag, R, density, "replacing it by fragments", e);
-  }
-  double removed = crush::sphere_volume(2.0 * R);
-  if (settings_.random_orientation)
-    fragments = crush::rotated(fragments, crush::random_rotation(settings_.seed, static_cast<std::uint64_t>(tag)));
-
-  for (std::size_t f = 0; f < fragments.size(); f++) {
-    double coord[3];
-    for (int k = 0; k < 3; k++) coord[k] = xm[k] + fragments[f].offset[k];
-    atom->avec->create_atom(type, coord);
-    const int n = atom->nlocal - 1;
-    const double r = fragments[f].radius;
-    atom->tag[n] = first_tag + static_cast<tagint>(f);
-    atom->mask[n] = mask;
-    atom->image[n] = image;
-    atom->radius[n] = r;
-    atom->density[n] = density;
-    const double volume = crush::sphere_volume(2.0 * r);
-    removed -= volume;
-    atom->rmass[n] = density * volume;
-    for (int k = 0; k < 3; k++) {
-      atom->v[n][k] = vm[k];
-      atom->omega[n][k] = wm[k];
-    }
-    for (int m = 0; m < modify->nfix; m++)
-      if (modify->fix[m]->create_attribute) modify->fix[m]->set_arrays(n);
-    double *data = fix_data_->array_atom[n];
-    try {
-      data[STRENGTH] = settings_.size_scaled(strength_.draw(atom->tag[n], generation), 2.0 * r);
-    } catch (const crush::ModelError &e) {
-      particle_error(atom->tag[n], r, density, "drawing the strength of this fragment", e);
-    }
-    data[GENERATION] = generation;
-    data[RATIO] = 0.0;
-  }
-  return removed;
-}
-
-// Deletes from the highest index down, so that no pending index is moved before it is deleted.
-void FixCrush::delete_mothers(std::vector<int> &mothers)
-{
-  std::sort(mothers.begin(), mothers.end());
-  for (std::size_t k = mothers.size(); k-- > 0;) {
-    atom->avec->copy(atom->nlocal - 1, mothers[k], 1);
-    atom->nlocal--;
-  }
+  count_outflow();
 }
 
 void FixCrush::log_events(const std::vector<Event> &events, tagint first_new_tag)
@@ -751,6 +600,8 @@ double FixCrush::compute_vector(int n)
     return max_ratio_;
   }
   if (n == CHECKED_STEPS) return static_cast<double>(checked_steps_);
+  if (n == OUTFLOW_VOLUME) return outflow_volume_;
+  if (n == OUTFLOW_PARTICLES) return static_cast<double>(outflow_particles_);
   return replace_seconds_;
 }
 
@@ -759,7 +610,7 @@ double FixCrush::compute_vector(int n)
 namespace {
 // The section starts with a name and a version: a file of another layout is refused by name.
 const char kRestartName[8] = "crush";
-const int kRestartVersion = 2;
+const int kRestartVersion = 3;  // 3: with the outflow
 struct RestartHead {
   char name[8];
   int version;
@@ -770,6 +621,10 @@ struct RestartState {
   tagint next_tag;
   std::uint64_t seed;
 };
+struct RestartOutflow {  // version 3
+  double volume;
+  bigint particles;
+};
 }  // namespace
 
 void FixCrush::write_restart(FILE *fp)
@@ -779,10 +634,13 @@ void FixCrush::write_restart(FILE *fp)
   RestartHead head = {{0}, kRestartVersion};
   std::memcpy(head.name, kRestartName, sizeof(kRestartName));
   if (comm->me == 0) {
-    int size = static_cast<int>(sizeof(RestartHead) + sizeof(RestartState) + pending_.size() * sizeof(Event));
+    const RestartOutflow outflow = {outflow_volume_, outflow_particles_};
+    int size = static_cast<int>(sizeof(RestartHead) + sizeof(RestartState) + sizeof(RestartOutflow) +
+                                pending_.size() * sizeof(Event));
     fwrite(&size, sizeof(int), 1, fp);
     fwrite(&head, sizeof(RestartHead), 1, fp);
     fwrite(&state, sizeof(RestartState), 1, fp);
+    fwrite(&outflow, sizeof(RestartOutflow), 1, fp);
     fwrite(pending_.data(), sizeof(Event), pending_.size(), fp);
   }
 }
@@ -812,7 +670,13 @@ void FixCrush::restart(char *buf)
   next_tag_ = state.next_tag;
   if (state.seed != settings_.seed && comm->me == 0)
     error->warning(FLERR, "fix crush: the restart file was written with another 'seed'");
+  buf += sizeof(RestartState);
+  RestartOutflow outflow;
+  std::memcpy(&outflow, buf, sizeof(RestartOutflow));
+  outflow_volume_ = outflow.volume;
+  outflow_particles_ = outflow.particles;
+  buf += sizeof(RestartOutflow);
   pending_.resize(static_cast<std::size_t>(state.npending));
-  std::memcpy(pending_.data(), buf + sizeof(RestartState), pending_.size() * sizeof(Event));
+  std::memcpy(pending_.data(), buf, pending_.size() * sizeof(Event));
   if (!pending_.empty()) next_reneighbor = update->ntimestep + 1;
 }

@@ -7,7 +7,9 @@
    record after reneighboring, end_of_step() as it reads it); end_of_step() finds the particles that
    reached their limit, agrees on them across processors (sorted by tag, so fragment tags and
    strengths never depend on the decomposition), logs them, and schedules a reneighboring;
-   pre_exchange() of the next step replaces each by its fragments.
+   pre_exchange() of the next step replaces each by its fragments (fix_crush_replacement.cpp: the
+   fragments, what they inherit from their mother, the books), and counts the grains that leave a
+   fixed box (fix_crush_outflow.cpp: 'thermo_modify lost').
    The physics (limit, strengths, layout, grading) is in the plain crush_*.h files.
 ------------------------------------------------------------------------- */
 #ifdef FIX_CLASS
@@ -45,6 +47,7 @@ class FixCrush : public Fix {
   void setup(int);
   void pre_force(int);
   void end_of_step();
+  void setup_pre_exchange();
   void pre_exchange();
   double compute_vector(int);
   void write_restart(FILE *);
@@ -55,6 +58,7 @@ class FixCrush : public Fix {
   // For compute crush/gsd.
   const crush::CrushSettings &settings() const { return settings_; }
   double removed_volume() const { return removed_volume_; }
+  double outflow_volume() const { return outflow_volume_; }
   double smallest_fragment_diameter() const { return smallest_fragment_diameter_; }
   double initial_largest_diameter() const { return initial_largest_diameter_; }
 
@@ -91,6 +95,10 @@ class FixCrush : public Fix {
   void log_events(const std::vector<Event> &events, tagint first_new_tag);
   void open_log();
   void check_particles() const;
+  // grains that leave the box (fix_crush_outflow.cpp)
+  bool leaves_box(const double *x) const;
+  void count_outflow();
+  void report_outflow(bigint count, double volume);
   void particle_error(tagint tag, double radius, double density, const char *doing,
                       const crush::ModelError &e) const;
   void replace_mothers();
@@ -102,12 +110,26 @@ class FixCrush : public Fix {
   bool breakable(int i) const;
   double create_fragments(int mother, tagint first_tag, int generation);
   void delete_mothers(std::vector<int> &mothers);
+  // what a fragment inherits (fix_crush_replacement.cpp)
+  enum class Inheritance { COPY, SHARE, NEW };
+  struct InheritedState {
+    class FixPropertyAtom *fix;
+    Inheritance rule;
+  };
+  void find_inherited_state();
+  void find_bodies();
+  const char *body_fix_of(int i) const;
+  void check_bodies() const;
+  void body_error(tagint tag, const char *body) const;
+  void inherit_state(int mother, int fragment, double mass_share) const;
 
   crush::CrushSettings settings_;
   crush::StrengthDraw strength_;
   const int nfrag_;                  // fragments per event (layout)
   class Region *region_;             // keyword region (NULL: everywhere)
   class FixPropertyAtom *fix_data_;  // per atom: sigma_lim (Pa), generation, last F_n/F_lim
+  std::vector<InheritedState> inherited_;  // every other fix property/atom, with its rule
+  std::vector<class Fix *> body_fixes_;    // fix multisphere and fix rigid: their grains cannot break
   char *data_id_;
   ContactLoadRecorder recorder_;
   double **limit_factor_;        // per type pair: (4 E'/3)^2
@@ -132,6 +154,9 @@ class FixCrush : public Fix {
   std::vector<Event> pending_;       // agreed at end_of_step, replaced at the next pre_exchange
   bigint events_total_;
   double removed_volume_;
+  double outflow_volume_;            // the volume of the particles that left the box (m^3)
+  bigint outflow_particles_;
+  bool outflow_reported_;            // this run has said that particles leave
   double max_ratio_;                 // over all processors, at step max_ratio_step_
   double local_max_ratio_;           // this processor's, at the last end_of_step
   bigint max_ratio_step_;

@@ -2,7 +2,7 @@
 """Bursts: many grains breaking in one step, on periodic and processor boundaries, on any number of
 ranks, and a restart written with the replacement still pending (tests/regression/burst/).
 
-  python3 test_burst.py LIGGGHTS WORKDIR CASE RANKS     CASE: all, half or restart
+  python3 test_burst.py LIGGGHTS WORKDIR CASE RANKS     CASE: all, half, restart or inherit
   python3 test_burst.py --list
 
 Every case asserts: every tag unique, particles = initial + 13 x events at every thermo row, the
@@ -145,6 +145,22 @@ def case_restart(liggghts, work, ranks):
     same = len(final) == len(final2) and all(
         a["id"] == b["id"] and max(abs(a[k] - b[k]) for k in "xyz") < 1e-9 for a, b in zip(final, final2))
     check(same, "the same %d particles at the end, positions within 1 nm" % len(final))
+
+
+@variants(*each_rank_count(1, 2, 3, 4), timeout=600)
+def case_inherit(liggghts, work, ranks):
+    """A user's fix property/atom, scalar and vector, set from each grain's tag (in.burst_inherit):
+    after the burst of the breakable half, each of the fragments holds its mother's values exactly
+    (tag, 2 tag, -tag), and each unbroken grain its own, whatever the ranks."""
+    ranks = int(ranks)
+    types = run_burst(liggghts, "in.burst_inherit", work, "half", ranks)
+    log, final = check_run(work, "half", ranks, types)
+    mother = {int(e["fragment_%d" % (f + 1)]): int(e["tag"]) for e in log for f in range(FRAGMENTS)}
+    wrong = [r["id"] for r in final
+             if [r["f_tag_copy"], r["f_tag_vector[1]"], r["f_tag_vector[2]"], r["f_tag_vector[3]"]]
+             != [float(m) for m in (lambda t: (t, t, 2 * t, -t))(mother.get(int(r["id"]), int(r["id"])))]]
+    check(not wrong, "on %d rank(s) all %d fragments hold their mother's scalar and vector, the %d grains their "
+          "own (%d wrong)" % (ranks, len(mother), len(final) - len(mother), len(wrong)))
 
 
 if __name__ == "__main__":

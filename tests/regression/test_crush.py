@@ -387,12 +387,32 @@ def case_hard(liggghts, work, which, ranks=1):
               "the top wall holds the %g MPa step after the event" % (stress / 1e6))
 
 
-def case_particle_lost(liggghts, work):
-    """A particle that leaves the box (LIGGGHTS deletes it silently by default) stops the run."""
-    deck = edited_deck(SINGLE, os.path.join(work, "deck"), [("fix             load all addforce 0.0 0.0 v_push",
-                                                              "fix             load all addforce 0.0 0.0 1.0")])
-    out = run_deck(liggghts, deck, os.path.join(work, "run"), expect_fail=True)
-    check("1 particles were lost" in out, "the run stops: 'fix crush: 1 particles were lost ...'")
+@variants(("ignore",), ("warn",), ("error",))
+def case_particle_lost(liggghts, work, policy):
+    """Of two grains, one is pushed out through the fixed top of the box: LIGGGHTS drops it. fix crush follows
+    'thermo_modify lost': with ignore (LIGGGHTS' default) and warn the run goes on and the grain's
+    volume leaves the books as outflow (f_crush[6], one particle in f_crush[7]), said once in the log;
+    with error the run stops at the exchange that would drop it."""
+    single = "create_atoms    1 single 0.0 0.0 0.0001 units box"
+    edits = [(single, single + "\ncreate_atoms    1 single 0.0005 0.0 0.0001 units box\ngroup first id 1"),
+             ("set             atom 1 diameter", "set             group all diameter"),
+             ("fix             load all addforce 0.0 0.0 v_push", "fix             load first addforce 0.0 0.0 1.0"),
+             ("thermo_modify   format float %.15g", "thermo_modify   format float %.15g lost " + policy),
+             ('print           "EVENTS ${events}"',
+              'print           "EVENTS ${events}"\nprint "OUTFLOW $(f_crush[6])"\nprint "OUTFLOW_N $(f_crush[7])"')]
+    deck = edited_deck(SINGLE, os.path.join(work, "deck"), edits)
+    out = run_deck(liggghts, deck, os.path.join(work, "run"), expect_fail=policy == "error")
+    if policy == "error":
+        check("fix crush: 1 particles leave the box at step" in out and "'thermo_modify lost error' forbids it" in out,
+              "the run stops: 'fix crush: 1 particles leave the box ... lost error forbids it'")
+        return
+    volume = math.pi / 6 * 2e-4 ** 3
+    check(abs(printed(out, "OUTFLOW") / volume - 1) < 1e-9 and printed(out, "OUTFLOW_N") == 1,
+          "lost %s: the grain's volume %.4e m^3 left the books as outflow (%.4e), one particle"
+          % (policy, volume, printed(out, "OUTFLOW")))
+    check(out.count("particles (") == 1 and "1 particles (%g m^3) leave the box" % volume in out,
+          "the log says it once: 'fix crush: 1 particles (... m^3) leave the box'")
+    check(printed(out, "EVENTS") == 0, "no event")
 
 
 def case_time_step_after_event(liggghts, work):

@@ -13,7 +13,7 @@ import shutil
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from liggghts_run import check, printed, read_dump, run_deck, variants  # noqa: E402
+from liggghts_run import check, printed, read_dump, read_thermo, run_deck, variants  # noqa: E402
 from liggghts_run import main as test_main  # noqa: E402
 from test_crush import read_events  # noqa: E402
 
@@ -115,6 +115,73 @@ def case_tutorial(liggghts, work, name, ranks):
     # the event log gives the mothers' diameters to 10 digits: a lost or doubled fragment is 1/14 of one
     check(abs(kept + removed - mothers) <= 1e-9 * mothers,
           "%s: fragments + removed volume = the mothers' volume (%.3e of it)" % (name, (kept + removed) / mothers - 1))
+
+
+HEAT_SETTINGS = {"sigma_lim0": "3e5", "d0": "0.008", "dmin": "0.006"}
+HEAT_RUN = ("run\t\t50000 upto", "run\t\t30000 upto")  # 10,000 steps of conduction after the events begin
+
+
+@variants(*[(bed, ranks) for bed in ("uniform", "half") for ranks in (1, 2)], timeout=300)
+def case_heat_transfer(liggghts, work, bed, ranks):
+    """LIGGGHTS' tutorial heatTransfer_1 (fix heat/gran: conduction between grains at 300 K and 800 K),
+    whole, with crushing added once the bed has settled, when the temperatures are set: every grain
+    at 800 K (uniform) or the tutorial's own half bed. A fragment is born at its mother's temperature:
+    with a uniform bed every particle is at 800 K at the end, and the thermal energy sum(m c T) has
+    lost only the removed volumes' share, rho c T V_removed; with the half bed (conduction conserves
+    sum(m c T)) each event step changes it by -rho c T V_removed, with T between 300 and 800 K."""
+    ranks = int(ranks)
+    source = os.path.join(tutorials(liggghts), "heatTransfer_1")
+    folder = os.path.join(work, "deck")
+    if os.path.isdir(folder):
+        shutil.rmtree(folder)
+    shutil.copytree(source, folder)
+    text = open(os.path.join(folder, "in.heatGran")).read()
+    temperature = "set             region halfbed property/atom Temp 800."
+    check(temperature in text, "the tutorial sets the half bed to 800 K")
+    check(HEAT_RUN[0] in text, "the tutorial runs to step 50000")
+    text = text.replace(*HEAT_RUN)
+    if bed == "uniform":
+        text = text.replace(temperature, "set             group all property/atom Temp 800.")
+    text = with_crushing(text, HEAT_SETTINGS, "property/atom Temp 800.")
+    every_step = ("thermo_style    custom step atoms f_heattransfer f_crush[1] f_crush[2]\n"
+                  "thermo          1\nthermo_modify   lost ignore norm no format float %.17g\n")
+    at = text.index("\n", text.index("fix crush")) + 1
+    text = text[:at] + every_step + text[at:]
+    text += 'write_dump all custom temperatures.dump id radius f_Temp[0] modify format "%d %.17g %.17g"\n'
+    open(os.path.join(folder, "in.heatGran"), "w").write(text)
+    out = run_deck(liggghts, os.path.join(folder, "in.heatGran"), os.path.join(work, "run"), ranks=ranks)
+    run = os.path.join(work, "run")
+    events = read_events(os.path.join(run, "crush_events.csv"))
+    check(len(events) >= 20, "%s bed on %d rank(s): %d events" % (bed, ranks, len(events)))
+    rows = [r for r in read_thermo(os.path.join(run, "log.liggghts")) if "crush[1]" in r]
+    key = next(k for k in rows[0] if k.startswith("heattran"))  # LIGGGHTS cuts the header to 8 characters
+    energy = {int(r["Step"]): r[key] for r in rows}
+    removed_total = printed(out, "REMOVED")
+    volume = lambda d: math.pi * d ** 3 / 6  # noqa: E731
+    removed_share = removed_total / sum(volume(float(e["diameter"])) for e in events)
+    rho_c = 8000.0 * 10.0
+    if bed == "uniform":
+        final = read_dump(os.path.join(run, "temperatures.dump"))[-1][2]
+        hot = [r["f_Temp[0]"] for r in final]
+        check(all(abs(t - 800.0) <= 1e-9 * 800.0 for t in hot),
+              "all %d particles at 800 K at the end (%.12g - %.12g K)" % (len(hot), min(hot), max(hot)))
+        first, last = rows[0][key], rows[-1][key]
+        expected = first - rho_c * 800.0 * removed_total
+        check(abs(last - expected) <= 1e-9 * first,
+              "sum(m c T) %.12g J -> %.12g J: less the removed volume's share, %.12g J (%.2e of it)"
+              % (first, last, expected, abs(last - expected) / first))
+        return
+    by_step = {}
+    for e in events:
+        by_step.setdefault(int(e["step"]), []).append(volume(float(e["diameter"])) * removed_share)
+    temperatures = []
+    for step, removed in sorted(by_step.items()):
+        # logged at the step that found them; replaced in the next one
+        change = energy[step + 1] - energy[step]
+        temperatures.append(-change / (rho_c * sum(removed)))
+    check(all(300.0 - 1e-6 <= t <= 800.0 + 1e-6 for t in temperatures),
+          "each of the %d event steps changes sum(m c T) by -rho c T V_removed with T in [300, 800] K "
+          "(%.6g - %.6g K)" % (len(temperatures), min(temperatures), max(temperatures)))
 
 
 if __name__ == "__main__":

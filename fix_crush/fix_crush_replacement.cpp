@@ -1,0 +1,308 @@
+/* ----------------------------------------------------------------------
+   liggghts-crush: fix crush's replacement of a mother by its fragments (see fix_crush.h and
+   doc/fix_crush.txt): the fragments, what they inherit, and the books that prove every event was
+   replaced exactly once.
+
+   A fragment is a piece of its mother: it takes her type, group, velocity, spin, image and density,
+   and the values of every fix property/atom that describe the material's state (temperature, a
+   user's own properties), copied. Values that sum over a particle (heat flux and source, CFD drag)
+   go by the fragment's mass share, so that the fragments hold what the mother held less the removed
+   volume's share. Contacts are new: contact histories (fix contact/history, the primitive walls'
+   history_<wall>) start empty. Grains of rigid bodies (fix multisphere, fix rigid) cannot break:
+   14 spheres are not a piece of a clump.
+------------------------------------------------------------------------- */
+#include "fix_crush.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "atom.h"
+#include "atom_vec.h"
+#include "comm.h"
+#include "crush_constants.h"
+#include "crush_fragments.h"
+#include "crush_model_error.h"
+#include "domain.h"
+#include "error.h"
+#include "fix_multisphere.h"
+#include "fix_property_atom.h"
+#include "group.h"
+#include "irregular.h"
+#include "modify.h"
+#include "update.h"
+
+using namespace LAMMPS_NS;
+
+namespace {
+
+// Per-particle values that sum something (a power, a force): split by mass share.
+const char *const kSharedProperties[] = {"heatFlux", "heatSource", "directionalHeatFlux", "dragforce", "hdtorque"};
+
+bool is_shared(const char *name)
+{
+  for (const char *shared : kSharedProperties)
+    if (strcmp(name, shared) == 0) return true;
+  return false;
+}
+
+}  // namespace
+
+// At init: every fix property/atom but fix crush's own, with its rule. A primitive wall keeps its
+// contact history in 'history_<wall ID>' (fix wall/gran): a fragment's wall contacts are new.
+void FixCrush::find_inherited_state()
+{
+  inherited_.clear();
+  std::vector<std::string> wall_histories;
+  for (int k = 0; k < modify->nfix; k++)
+    if (strcmp(modify->fix[k]->style, "wall/gran") == 0)
+      for (const char *prefix : {"history_", "force_"})
+        wall_histories.push_back(prefix + std::string(modify->fix[k]->id));
+  for (int k = 0; k < modify->nfix; k++) {
+    FixPropertyAtom *fix = dynamic_cast<FixPropertyAtom *>(modify->fix[k]);
+    if (!fix || fix == fix_data_) continue;
+    const std::string name = fix->id;
+    Inheritance rule = Inheritance::COPY;
+    if (std::find(wall_histories.begin(), wall_histories.end(), name) != wall_histories.end())
+      rule = Inheritance::NEW;
+    else if (is_shared(fix->id))
+      rule = Inheritance::SHARE;
+    inherited_.push_back({fix, rule});
+  }
+}
+
+// The fragment's per-atom values from its mother's, after every fix's set_arrays gave it the defaults.
+void FixCrush::inherit_state(int mother, int fragment, double mass_share) const
+{
+  for (const InheritedState &state : inherited_) {
+    if (state.rule == Inheritance::NEW) continue;
+    FixPropertyAtom *fix = state.fix;
+    fix->copy_arrays(mother, fragment, 0);
+    if (state.rule != Inheritance::SHARE) continue;
+    if (fix->array_atom)
+      for (int k = 0; k < fix->get_nvalues(); k++) fix->array_atom[fragment][k] *= mass_share;
+    else
+      fix->vector_atom[fragment] *= mass_share;
+  }
+}
+
+void FixCrush::find_bodies()
+{
+  body_fixes_.clear();
+  for (int k = 0; k < modify->nfix; k++)
+    if (strncmp(modify->fix[k]->style, "multisphere", 11) == 0 || strncmp(modify->fix[k]->style, "rigid", 5) == 0)
+      body_fixes_.push_back(modify->fix[k]);
+}
+
+// The style of the fix whose rigid body holds particle i, or NULL.
+const char *FixCrush::body_fix_of(int i) const
+{
+  for (Fix *fix : body_fixes_) {
+    if (strncmp(fix->style, "multisphere", 11) == 0) {
+      if (static_cast<FixMultisphere *>(fix)->belongs_to(i) >= 0) return fix->style;
+    } else if (atom->mask[i] & fix->groupbit) {
+      return fix->style;
+    }
+  }
+  return NULL;
+}
+
+// At init: no grain of the group belongs to a rigid body (bodies inserted later are caught at their event).
+void FixCrush::check_bodies() const
+{
+  if (body_fixes_.empty()) return;
+  int first = -1;
+  for (int i = 0; i < atom->nlocal && first < 0; i++)
+    if ((atom->mask[i] & groupbit) && body_fix_of(i)) first = i;
+  int tag = first >= 0 ? atom->tag[first] : 0, tag_all = 0;
+  MPI_Allreduce(&tag, &tag_all, 1, MPI_INT, MPI_MAX, world);
+  if (tag_all == 0) return;
+  if (first >= 0 && atom->tag[first] == tag_all) body_error(tag_all, body_fix_of(first));
+  MPI_Barrier(world);  // the owner stops the run
+}
+
+void FixCrush::body_error(tagint tag, const char *body) const
+{
+  char msg[512];
+  snprintf(msg, sizeof(msg), "Fix crush (id %s): particle %ld belongs to a rigid body of fix %s: a body's spheres "
+           "cannot break into fragments; leave the bodies out of fix crush's group", id, static_cast<long>(tag), body);
+  error->one(FLERR, msg);
+}
+
+void FixCrush::replace_mothers()
+{
+  // New tags follow every tag in use (and every tag ever given), in the agreed event order.
+  const tagint first = std::max(largest_tag() + 1, next_tag_);
+  if (static_cast<bigint>(first) + static_cast<bigint>(nfrag_) * static_cast<bigint>(pending_.size()) > MAXTAGINT)
+    error->all(FLERR, "fix crush: particle tags would exceed the largest tag LIGGGHTS allows (MAXTAGINT)");
+  log_events(pending_, first);
+
+  const std::vector<std::pair<std::size_t, int>> owned = owned_mothers();
+  const int nlocal_before = atom->nlocal;
+  std::vector<int> mothers;
+  double removed_local = 0.0, smallest = 0.0;
+  for (const auto &event : owned) {
+    const std::size_t k = event.first;
+    const int i = event.second;
+    mothers.push_back(i);
+    removed_local += create_fragments(i, first + nfrag_ * static_cast<tagint>(k), pending_[k].generation + 1);
+    const double d = crush::smallest_fragment_ratio(settings_.layout) * pending_[k].diameter;
+    smallest = smallest == 0.0 ? d : std::min(smallest, d);
+  }
+  delete_mothers(mothers);
+
+  // Books: the volume that left the particles is the removed volume, nothing else; and every
+  // event replaced exactly once, counted on all processors (one reduction per event step).
+  double local_sums[3] = {removed_local, static_cast<double>(atom->nlocal - nlocal_before),
+                          static_cast<double>(owned.size())};
+  double sums[3];
+  MPI_Allreduce(local_sums, sums, 3, MPI_DOUBLE, MPI_SUM, world);
+  removed_volume_ += sums[0];
+  double smallest_all = 0.0, big = smallest > 0.0 ? smallest : 1e300;
+  MPI_Allreduce(&big, &smallest_all, 1, MPI_DOUBLE, MPI_MIN, world);
+  if (smallest_all < 1e300)
+    smallest_fragment_diameter_ = smallest_fragment_diameter_ == 0.0 ? smallest_all
+                                                                    : std::min(smallest_fragment_diameter_, smallest_all);
+  events_total_ += static_cast<bigint>(pending_.size());
+  particle_count_ += static_cast<bigint>(nfrag_ - 1) * static_cast<bigint>(pending_.size());
+  check_books(sums[1], sums[2]);
+  next_tag_ = first + nfrag_ * static_cast<tagint>(pending_.size());
+  atom->natoms += static_cast<bigint>(nfrag_ - 1) * static_cast<bigint>(pending_.size());
+
+  atom->nghost = 0;
+  atom->map_init();
+  atom->map_set();
+  // Fragments may lie outside this sub-domain or the periodic box: remap and migrate them.
+  domain->pbc();
+  domain->reset_box();
+  if (irregular_->migrate_check()) irregular_->migrate_atoms();
+  if (settings_.check_tags) check_unique_tags();
+
+  if (settings_.dmin <= 0.0) check_time_step(smallest_radius());
+}
+
+// The agreed events whose mother this processor owns, as (event, local index), all resolved before
+// the first fragment exists. create_atom() appends at nlocal, over the ghost slots, while the atom
+// map still points into them: once fragments are appended, a mother that is only a ghost here maps
+// to an index below the grown nlocal and would be taken as owned, and its fragments created twice.
+std::vector<std::pair<std::size_t, int>> FixCrush::owned_mothers() const
+{
+  std::vector<std::pair<std::size_t, int>> owned;
+  const int nlocal = atom->nlocal;
+  for (std::size_t k = 0; k < pending_.size(); k++) {
+    const int i = atom->map(pending_[k].tag);
+    if (i >= 0 && i < nlocal) owned.emplace_back(k, i);  // else a ghost, or owned by another processor
+  }
+  return owned;
+}
+
+// Always on: each event replaced by exactly one processor, and (fragments - 1) new particles per
+// event. A failure names both numbers and stops the run before a corrupted state is written.
+void FixCrush::check_books(double added, double replaced) const
+{
+  const double events = static_cast<double>(pending_.size());
+  if (replaced == events && added == (nfrag_ - 1) * events) return;
+  char msg[400];
+  snprintf(msg, sizeof(msg), "fix crush: at step " BIGINT_FORMAT " %.0f mothers were replaced and %.0f particles "
+           "added, the books require %.0f and %.0f: particles were lost or duplicated (please report this with "
+           "the deck)", update->ntimestep, replaced, added, events, (nfrag_ - 1) * events);
+  error->all(FLERR, msg);
+}
+
+// The largest tag in use on all processors (0 without particles).
+tagint FixCrush::largest_tag() const
+{
+  int largest = 0, largest_all = 0;  // LIGGGHTS 3.8.0 stores tags as int (atom->tag)
+  for (int i = 0; i < atom->nlocal; i++) largest = std::max(largest, atom->tag[i]);
+  MPI_Allreduce(&largest, &largest_all, 1, MPI_INT, MPI_MAX, world);
+  return largest_all;
+}
+
+// With 'check_tags yes' (tests): every tag in use exactly once over all processors.
+void FixCrush::check_unique_tags() const
+{
+  const tagint maxtag_all = largest_tag();
+  std::vector<int> seen(maxtag_all + 1, 0), seen_all(maxtag_all + 1, 0);
+  for (int i = 0; i < atom->nlocal; i++) seen[atom->tag[i]]++;
+  MPI_Allreduce(seen.data(), seen_all.data(), maxtag_all + 1, MPI_INT, MPI_SUM, world);
+  for (tagint t = 0; t <= maxtag_all; t++)
+    if (seen_all[t] > 1) {
+      char msg[200];
+      snprintf(msg, sizeof(msg), "fix crush (check_tags): tag %d is held by %d particles at step " BIGINT_FORMAT,
+               t, seen_all[t], update->ntimestep);
+      error->all(FLERR, msg);
+    }
+}
+
+// Appends the mother's fragments (the mother is deleted afterwards) and returns the volume they leave out (m^3).
+double FixCrush::create_fragments(int mother, tagint first_tag, int generation)
+{
+  // Copy the mother: creating atoms may reallocate every per-atom array.
+  const int type = atom->type[mother], mask = atom->mask[mother], tag = atom->tag[mother];
+  const tagint image = atom->image[mother];
+  const double R = atom->radius[mother], density = atom->density[mother];
+  double xm[3], vm[3], wm[3];
+  for (int k = 0; k < 3; k++) {
+    xm[k] = atom->x[mother][k];
+    vm[k] = atom->v[mother][k];
+    wm[k] = atom->omega[mother][k];
+  }
+  if (const char *body = body_fix_of(mother)) body_error(tag, body);
+  std::vector<crush::Fragment> fragments;
+  try {
+    fragments = crush::fragment_layout(settings_.layout, R);
+  } catch (const crush::ModelError &e) {
+    particle_error(tag, R, density, "replacing it by fragments", e);
+  }
+  double removed = crush::sphere_volume(2.0 * R);
+  if (settings_.random_orientation)
+    fragments = crush::rotated(fragments, crush::random_rotation(settings_.seed, static_cast<std::uint64_t>(tag)));
+
+  for (std::size_t f = 0; f < fragments.size(); f++) {
+    double coord[3];
+    for (int k = 0; k < 3; k++) coord[k] = xm[k] + fragments[f].offset[k];
+    atom->avec->create_atom(type, coord);
+    const int n = atom->nlocal - 1;
+    const double r = fragments[f].radius;
+    atom->tag[n] = first_tag + static_cast<tagint>(f);
+    atom->mask[n] = mask;
+    atom->image[n] = image;
+    atom->radius[n] = r;
+    atom->density[n] = density;
+    const double volume = crush::sphere_volume(2.0 * r);
+    removed -= volume;
+    atom->rmass[n] = density * volume;
+    for (int k = 0; k < 3; k++) {
+      atom->v[n][k] = vm[k];
+      atom->omega[n][k] = wm[k];
+    }
+    for (int m = 0; m < modify->nfix; m++)
+      if (modify->fix[m]->create_attribute) {
+        modify->fix[m]->pre_set_arrays();  // as LIGGGHTS' own creators do: defaults may name a property
+        modify->fix[m]->set_arrays(n);
+      }
+    inherit_state(mother, n, volume / crush::sphere_volume(2.0 * R));
+    double *data = fix_data_->array_atom[n];
+    try {
+      data[STRENGTH] = settings_.size_scaled(strength_.draw(atom->tag[n], generation), 2.0 * r);
+    } catch (const crush::ModelError &e) {
+      particle_error(atom->tag[n], r, density, "drawing the strength of this fragment", e);
+    }
+    data[GENERATION] = generation;
+    data[RATIO] = 0.0;
+  }
+  return removed;
+}
+
+// Deletes from the highest index down, so that no pending index is moved before it is deleted.
+void FixCrush::delete_mothers(std::vector<int> &mothers)
+{
+  std::sort(mothers.begin(), mothers.end());
+  for (std::size_t k = mothers.size(); k-- > 0;) {
+    atom->avec->copy(atom->nlocal - 1, mothers[k], 1);
+    atom->nlocal--;
+  }
+}
+
