@@ -9,6 +9,7 @@ balance exactly: every fragment and the removed volume add up to the mothers of 
   python3 test_own_decks.py LIGGGHTS WORKDIR CASE [ARG ...]"""
 import math
 import os
+import re
 import shutil
 import sys
 
@@ -40,9 +41,6 @@ def own_deck_lines():
 # the edits that shorten it (run lengths) without changing what it does, and the line after which the
 # fix goes (packing grows every grain with fix adapt, fragments too: its grains crush once grown).
 TUTORIALS = {
-    "movingMeshGran": ("in.movingMeshGran", {"sigma_lim0": "6e5", "d0": "0.08", "dmin": "0.05", "every": "20"},
-                       [("run\t\t29999 upto", "run\t\t10000 upto"), ("run\t\t30000 upto", "run\t\t10001 upto"),
-                        ("run\t\t15000", "run\t\t5000"), ("run\t\t\t25000", "run\t\t\t3000")], "pair_coeff"),
     "packing": ("in.packing", {"sigma_lim0": "4e5", "d0": "0.016", "dmin": "0.012"},
                 [("variable\tgrowts equal 50000", "variable\tgrowts equal 12000"),
                  ("variable\trelaxts equal 20000", "variable\trelaxts equal 4000")], "unfix\tgrow"),
@@ -115,6 +113,59 @@ def case_tutorial(liggghts, work, name, ranks):
     # the event log gives the mothers' diameters to 10 digits: a lost or doubled fragment is 1/14 of one
     check(abs(kept + removed - mothers) <= 1e-9 * mothers,
           "%s: fragments + removed volume = the mothers' volume (%.3e of it)" % (name, (kept + removed) / mothers - 1))
+
+
+# Decks whose grains leave a fixed box (chute_wear: streamed onto a chute, they leave at its foot;
+# 'thermo_modify lost ignore') or move a shrink-wrapped one (movingMeshGran: 'boundary m m m', a bucket
+# mesh moved through the bed), whole: deck, crush settings (dmin above the largest fragment), the line
+# after which fix crush goes, the fix that inserts the grains (and their density), and whether grains
+# must leave.
+OUTFLOW_TUTORIALS = {
+    "chute_wear": ("in.chute_wear", {"sigma_lim0": "2e5", "d0": "0.005", "dmin": "0.004"}, "pair_coeff", 2500.0, True),
+    "movingMeshGran": ("in.movingMeshGran", {"sigma_lim0": "6e5", "d0": "0.08", "dmin": "0.05", "every": "20"},
+                       "pair_coeff", 2500.0, False),
+}
+
+
+@variants(*[(name, ranks) for name in OUTFLOW_TUTORIALS for ranks in (1, 2)], timeout=900)
+def case_outflow(liggghts, work, name, ranks):
+    """A tutorial whose grains leave the box or move it, run to its end with crushing added: grains
+    break, tags stay unique, and the books hold with the volume that left: particles +
+    removed volume + outflow = the volume the insertion fix created, to 1e-9."""
+    deck_name, settings, after, density, leaves = OUTFLOW_TUTORIALS[name]
+    source = os.path.join(tutorials(liggghts), name)
+    folder = os.path.join(work, "deck")
+    if os.path.isdir(folder):
+        shutil.rmtree(folder)
+    shutil.copytree(source, folder)
+    text = open(os.path.join(folder, deck_name)).read()
+    unfix = re.search(r"^unfix\s+ins\s*$", text, re.M)
+    check(unfix is not None, "%s stops inserting with 'unfix ins'" % name)
+    text = text[:unfix.start()] + 'print "INSERTED_MASS $(f_ins[2])"\n' + text[unfix.start():]
+    text = with_crushing(text, settings, after)
+    text += 'print "OUTFLOW $(f_crush[6])"\nprint "OUTFLOW_N $(f_crush[7])"\n'
+    open(os.path.join(folder, deck_name), "w").write(text)
+    out = run_deck(liggghts, os.path.join(folder, deck_name), os.path.join(work, "run"), ranks=int(ranks))
+    events = read_events(os.path.join(work, "run", "crush_events.csv"))
+    steps = {}
+    for e in events:
+        steps[e["step"]] = steps.get(e["step"], 0) + 1
+    check(len(events) >= 20,
+          "%s on %s rank(s) ran to its end: %d events, up to %d in one step" % (name, ranks, len(events),
+                                                                             max(steps.values())))
+    rows = read_dump(os.path.join(work, "run", "final.dump"))[-1][2]
+    tags = [int(r["id"]) for r in rows]
+    check(len(tags) == len(set(tags)), "%s: %d particles, every tag unique" % (name, len(tags)))
+    left = printed(out, "OUTFLOW_N")
+    if leaves:
+        check(left > 0 and "leave the box at step" in out, "%d particles left the box, and the log says so" % left)
+    volume = lambda d: math.pi * d ** 3 / 6  # noqa: E731
+    present = sum(volume(2 * r["radius"]) for r in rows)
+    inserted = printed(out, "INSERTED_MASS") / density
+    books = present + printed(out, "REMOVED") + printed(out, "OUTFLOW")
+    check(abs(books - inserted) <= 1e-9 * inserted,
+          "%s: particles + removed + outflow (%.6e m^3) = the inserted volume (%.6e m^3; %.1e of it)"
+          % (name, books, inserted, abs(books / inserted - 1)))
 
 
 HEAT_SETTINGS = {"sigma_lim0": "3e5", "d0": "0.008", "dmin": "0.006"}
