@@ -13,7 +13,7 @@ rm -rf "$scratch" && mkdir -p "$scratch"
 tar xJf "$tarball" -C "$scratch"
 tree=$(echo "$scratch"/LIGGGHTS-PUBLIC-*)
 for p in "$here"/patches/*.patch; do patch -s -p1 -d "$tree" < "$p"; done
-cp "$here"/common/* "$here"/pair_hertz_scaled/* "$here"/quasi_static/* "$here"/fix_crush/* "$here"/checkpoint/* "$here"/balance/* "$tree/src/"
+cp "$here"/common/* "$here"/pair_hertz_scaled/* "$here"/quasi_static/* "$here"/fix_crush/* "$here"/checkpoint/* "$here"/balance/* "$here"/neighbor_classes/* "$tree/src/"
 
 # LIGGGHTS' user options: no VTK (LIGGGHTS 3.8.0 predates Debian's VTK 9), Eigen for the plugin.
 cat > "$tree/src/MAKE/Makefile.user" <<MAKEUSER

@@ -4,7 +4,8 @@
 #   bash scripts/fontainebleau_runs.sh [OUT_DIR (default runs/fontainebleau)] [tests...]
 #   tests: O2 O1.5 O1 I2 I1.5 I1 Tdense Tloose (default: all); TEST:SEED runs it with another seed
 #   (sample and strengths), e.g. O2:179424673 (a prime that differs from the decks' template seeds), into OUT_DIR/TEST_sSEED
-# Environment: RANKS (2), LIGGGHTS (build/liggghts).
+# Environment: RANKS (2), LIGGGHTS (build/liggghts), EXTRA_VARS (further -var pairs for every test,
+# e.g. "-var neighbor_style multi").
 # Writes OUT_DIR/<test>/ (the deck's outputs and log), OUT_DIR/runtimes.csv (test, ranks, initial and
 # final particles, events, wall-clock seconds) and OUT_DIR/figures/*.png (post/plot.py).
 set -euo pipefail
@@ -29,6 +30,9 @@ for spec in $tests; do
     *) echo "unknown test $t (O2 O1.5 O1 I2 I1.5 I1 Tdense Tloose)" >&2; exit 2 ;;
   esac
   vars+=("${seed_vars[@]}")
+  # EXTRA_VARS: further -var pairs for every test (for example '-var neighbor_style multi')
+  read -r -a extra <<< "${EXTRA_VARS:-}"
+  vars+=("${extra[@]}")
   rm -rf "$dir" && mkdir -p "$dir" && cp "$here"/examples/fontainebleau/in.* "$dir"/
   echo "== $spec: mpirun -np $ranks liggghts -in $deck ${vars[*]}"
   start=$(date +%s%N)

@@ -9,8 +9,8 @@ WHICH: event_log (fix crush cannot open its log: error->one on proc 0), time_ste
 the stable one: error->all), lost (a particle leaves the box under 'thermo_modify lost error'), one_rank (an invalid atom type in a
 data file, found only by the proc that owns the atom: on 2 ranks proc 1 raises error->one alone),
 coincident (two grains created at one point: the contact has no normal, patches/0008 stops the run
-naming both tags, error->one on the proc that computes the contact), neighbor_multi ('neighbor ...
-multi', whose granular lists LIGGGHTS 3.8.0 leaves empty: patches/0012 stops the run at its setup).
+naming both tags, error->one on the proc that computes the contact), size_classes ('neighbor ...
+multi' with decreasing bounds for its size classes: 'neigh_modify size_classes', patches/0012).
 """
 import os
 import subprocess
@@ -63,9 +63,10 @@ def failing_deck(case, work):
                                             ("thermo_modify   format float %.15g",
                                              "thermo_modify   format float %.15g lost error")]), \
             "fix crush: 1 particles leave the box at step"
-    if case == "neighbor_multi":
-        return edited_deck(SINGLE, folder, [("neighbor        0.00005 bin", "neighbor        0.00005 multi")]), \
-            "neighbor multi: LIGGGHTS 3.8.0 builds no granular neighbor lists in style multi"
+    if case == "size_classes":
+        return edited_deck(SINGLE, folder, [("neighbor        0.00005 bin", "neighbor        0.00005 multi\n"
+                                             "neigh_modify    size_classes 2 0.0002 0.0001")]), \
+            "neigh_modify size_classes: expected the bounds in increasing order"
     if case == "coincident":
         single = "create_atoms    1 single 0.0 0.0 0.0001 units box"
         deck = edited_deck(SINGLE, folder, [(single, single + "\n" + single),
@@ -98,7 +99,7 @@ def check_error(liggghts, work, case, ranks):
 
 
 @variants(*[(which, ranks) for which in ("event_log", "time_step", "lost", "one_rank",
-                                                                 "coincident", "neighbor_multi") for ranks in (1, 2)])
+                                                                 "coincident", "size_classes") for ranks in (1, 2)])
 def case_redirected(liggghts, work, which, ranks):
     check_error(liggghts, work, which, ranks)
 
