@@ -2,8 +2,8 @@
 """Granular neighbour lists in style multi (patches/0012, neighbor_classes/): the same pairs as style
 bin, found by size class, on crushed samples.
 
-- burst: the burst lattice (periodic on every face) after its breakable half broke, grains and
-  fragments, on 1-4 ranks: bin and multi hold the same number of pairs ('Total # of neighbors'),
+- burst: the burst lattice (periodic on every face, or shrink-wrapped) after its breakable half broke,
+  grains and fragments, on 1-4 ranks: bin and multi hold the same number of pairs ('Total # of neighbors'),
   log the same events, keep the burst's books, and end with the same forces and torques up to the
   order of summation;
 - cone: a cone pushed into the chamber (the penetrometer is a mesh: fix neighlist/mesh reads the main
@@ -15,7 +15,7 @@ import re
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from liggghts_run import check, each_rank_count, read_dump, read_thermo, run_deck, variants  # noqa: E402
+from liggghts_run import check, edited_deck, each_rank_count, read_dump, run_deck, variants  # noqa: E402
 from liggghts_run import main as test_main  # noqa: E402
 from test_burst import BURST, check_run, write_data  # noqa: E402
 from test_penetration import push, prepare_chamber, read_rows  # noqa: E402
@@ -33,10 +33,13 @@ def total_neighbors(output):
     return int(found[-1])
 
 
-def burst_run(liggghts, work, style, ranks):
+def burst_run(liggghts, work, style, ranks, boundary="p p p"):
+    """The burst deck in work, in a periodic box or (boundary 'm m m') a shrink-wrapped one."""
+    deck = edited_deck(os.path.join(BURST, "in.burst_neighbor"), work + "_deck",
+                       [("boundary        p p p", "boundary        " + boundary)], includes=("in.burst_setup",))
     os.makedirs(work, exist_ok=True)
     types = write_data(os.path.join(work, "burst.data"))
-    out = run_deck(liggghts, os.path.join(BURST, "in.burst_neighbor"), work,
+    out = run_deck(liggghts, deck, work,
                    {"case": "half", "log": "events.csv", "out": "final.dump", "neighbor_style": style},
                    ranks=ranks, keep=True)
     check_run(work, "half", ranks, types)
@@ -49,13 +52,15 @@ def largest_difference(rows_a, rows_b, keys):
     return worst / scale
 
 
-@variants(*each_rank_count(1, 2, 3, 4), timeout=600)
-def case_burst(liggghts, work, ranks):
-    """bin and multi on the crushed, periodic burst lattice: same pairs, events and books, forces and
-    torques within round-off."""
+@variants(*[(ranks, boundary) for boundary in ("periodic", "shrink") for ranks in (1, 2, 3, 4)], timeout=600)
+def case_burst(liggghts, work, ranks, boundary):
+    """bin and multi on the crushed burst lattice, periodic on every face or in a shrink-wrapped box
+    (the lattice's faces then free): same pairs, events and books, forces and torques within
+    round-off."""
     ranks = int(ranks)
-    out_bin, bin_rows = burst_run(liggghts, os.path.join(work, "bin"), "bin", ranks)
-    out_multi, multi_rows = burst_run(liggghts, os.path.join(work, "multi"), "multi", ranks)
+    box = "p p p" if boundary == "periodic" else "m m m"
+    out_bin, bin_rows = burst_run(liggghts, os.path.join(work, "bin"), "bin", ranks, box)
+    out_multi, multi_rows = burst_run(liggghts, os.path.join(work, "multi"), "multi", ranks, box)
     pairs = total_neighbors(out_bin)
     check(total_neighbors(out_multi) == pairs > 0, "the same %d pairs in the last lists" % pairs)
     builds = [int(re.findall(r"^Neighbor list builds = (\d+)", o, re.M)[-1]) for o in (out_bin, out_multi)]
