@@ -22,28 +22,30 @@ cone_n=${CONE_N:-40}
 cases=${CASES:-o1 cone}
 liggghts=${LIGGGHTS:-$root/build/liggghts}
 source "$root/scripts/mpi_env.sh"
+source "$here/rounds.sh"   # ratio, summary
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
 # --- 1. the O-1 state -------------------------------------------------------------------------
 if [[ " $cases " == *" o1 "* ]]; then
-o1=${O1_DIR:-}
-if [ -z "$o1" ]; then
-  echo "running O-1 for its 100 MPa state (scripts/fontainebleau_runs.sh $work/runs O1) ..."
-  RANKS=2 bash "$root/scripts/fontainebleau_runs.sh" "$work/runs" O1 > "$work/o1.txt" 2>&1 \
-    || { tail -5 "$work/o1.txt"; exit 1; }
-  o1=$work/runs/O1
-fi
-dump=$o1/dump_O1_100MPa.liggghts
-[ -f "$dump" ] || { echo "no $dump: run 'scripts/fontainebleau_runs.sh DIR O1' and give O1_DIR=DIR/O1" >&2; exit 1; }
-mkdir -p "$work/o1state" && cp "$here/in.polydisperse" "$work/o1state/"
-# the data file, the walls' first positions at the particles' extents and a time step of 0.2 Rayleigh steps of the
-# smallest particle (G = 3 GPa, nu = 0.3, rho = 2650 kg/m^3)
-walls=$(/usr/bin/python3 - "$dump" "$work/o1state/polydisperse.data" <<'EOF'
+  o1=${O1_DIR:-}
+  if [ -z "$o1" ]; then
+    echo "running O-1 for its 100 MPa state (scripts/fontainebleau_runs.sh $work/runs O1) ..."
+    RANKS=2 bash "$root/scripts/fontainebleau_runs.sh" "$work/runs" O1 > "$work/o1.txt" 2>&1 \
+      || { tail -5 "$work/o1.txt"; exit 1; }
+    o1=$work/runs/O1
+  fi
+  dump=$o1/dump_O1_100MPa.liggghts
+  [ -f "$dump" ] || { echo "no $dump: run 'scripts/fontainebleau_runs.sh DIR O1' and give O1_DIR=DIR/O1" >&2; exit 1; }
+  mkdir -p "$work/o1state" && cp "$here/in.polydisperse" "$work/o1state/"
+  # the data file, the walls' first positions at the particles' extents and a time step of 0.2 Rayleigh steps of the
+  # smallest particle (G = 3 GPa, nu = 0.3, rho = 2650 kg/m^3)
+  walls=$(/usr/bin/python3 - "$dump" "$work/o1state/polydisperse.data" <<'EOF'
 import math, sys
 lines = open(sys.argv[1]).read().splitlines()
-header = lines[lines.index(next(l for l in lines if l.startswith("ITEM: ATOMS")))].split()[2:]
-rows = [dict(zip(header, map(float, l.split()))) for l in lines[lines.index(next(l for l in lines if l.startswith("ITEM: ATOMS"))) + 1:]]
+start = next(k for k, l in enumerate(lines) if l.startswith("ITEM: ATOMS"))
+header = lines[start].split()[2:]
+rows = [dict(zip(header, map(float, l.split()))) for l in lines[start + 1:]]
 lo = [min(r[k] - r["radius"] for r in rows) for k in "xyz"]
 hi = [max(r[k] + r["radius"] for r in rows) for k in "xyz"]
 pad = [0.05 * (h - l) for l, h in zip(lo, hi)]
@@ -58,10 +60,10 @@ print(" ".join("-var %s %.17g" % (n, v) for n, v in zip(("xlo", "ylo", "zlo"), l
       " ".join("-var %s %.17g" % (n, v) for n, v in zip(("xhi", "yhi", "zhi"), hi)),
       "-var dt %.6g" % dt, "# %d %.4g" % (len(rows), max(radii) / min(radii)))
 EOF
-)
-read -r -a wall_args <<< "${walls%%#*}"
-info=${walls##*# }
-echo "O-1 at 100 MPa: ${info% *} particles, largest / smallest radius ${info#* }"
+  )
+  read -r -a wall_args <<< "${walls%%#*}"
+  info=${walls##*# }
+  echo "O-1 at 100 MPa: ${info% *} particles, largest / smallest radius ${info#* }"
 fi
 
 # o1_run STYLE: seconds per particle-step, neighbour share (%), neighbours per particle, builds
@@ -93,13 +95,6 @@ cone_run() {
        END {printf "%.6g %.2f\n", t / w, a}' "$cone/penetration/log.$1"
 }
 
-ratio() { awk -v a="$1" -v b="$2" 'BEGIN{print a/b}'; }
-summary() {
-  local name=$1; shift
-  printf '%s\n' "$@" | sort -g | awk -v name="$name" '{r[NR] = $1} END {
-    m = (NR % 2) ? r[(NR + 1) / 2] : (r[NR / 2] + r[NR / 2 + 1]) / 2
-    printf "%-62s median %.3f   (rounds: %.3f - %.3f)\n", name, m, r[1], r[NR] }'
-}
 
 o1_ratios=() cone_ratios=()
 for round in $(seq "$rounds"); do

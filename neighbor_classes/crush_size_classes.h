@@ -38,7 +38,6 @@ class SizeClassBounds {
   // Returns an empty string when the bounds are valid, else what is wrong with them.
   std::string set_upper(const std::vector<double> &upper);
   bool automatic() const { return automatic_; }
-  const std::vector<double> &upper() const { return upper_; }
 
   // The upper bounds to use for spheres whose radii span [rmin, rmax].
   std::vector<double> bounds_for(double rmin, double rmax) const;
@@ -90,9 +89,6 @@ class SizeClassBins {
 
   int classes() const { return static_cast<int>(rmax_.size()); }
   int class_of(int i) const { return class_of_[i]; }
-  double rmax(int k) const { return rmax_[k]; }
-  int population(int k) const { return population_[k]; }
-  double cut(int a, int b) const { return stencil(a, b).cut; }
 
   // Finds, for each sphere i < iterated, its neighbours j >= iterated (ghosts, spheres outside the
   // include group) of smaller classes: the pairs only i's list can hold. Call after build().

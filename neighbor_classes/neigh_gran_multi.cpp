@@ -8,9 +8,9 @@
 #include <vector>
 
 #include "atom.h"
+#include "crush_number.h"
 #include "error.h"
 #include "fix_contact_history.h"
-#include "force.h"
 #include "lammps.h"
 #include "my_page.h"
 #include "neigh_list.h"
@@ -20,21 +20,24 @@ using namespace LAMMPS_NS;
 
 int NeighSizeClasses::parse(LAMMPS *lmp, int narg, char **arg)
 {
-  const char *expected = "neigh_modify size_classes: expected 'auto' or N followed by N increasing "
-                         "upper radii (m) of the classes";
-  if (narg < 1) lmp->error->all(FLERR, expected);
+  const std::string expected = "expected 'auto' or N followed by N increasing upper radii (m) of the classes";
+  auto fail = [&](const std::string &what) {
+    lmp->error->all(FLERR, ("neigh_modify size_classes: " + what).c_str());
+  };
+  if (narg < 1) fail(expected);
   if (strcmp(arg[0], "auto") == 0) {
     bounds.set_auto();
     return 1;
   }
-  const int n = lmp->force->inumeric(FLERR, arg[0]);
-  if (n < 1 || narg < n + 1) lmp->error->all(FLERR, expected);
-  std::vector<double> upper;
-  for (int k = 1; k <= n; k++) upper.push_back(lmp->force->numeric(FLERR, arg[k]));
+  long long n = 0;
+  if (!crush::parse_whole(arg[0], n) || n < 1) fail(expected + ", got '" + arg[0] + "'");
+  if (narg < n + 1) fail(expected + ": " + arg[0] + " bounds announced, " + std::to_string(narg - 1) + " given");
+  std::vector<double> upper(n);
+  for (int k = 0; k < n; k++)
+    if (!crush::parse_finite(arg[k + 1], upper[k])) fail(expected + ", got '" + arg[k + 1] + "' as a bound");
   const std::string wrong = bounds.set_upper(upper);
-  if (!wrong.empty())
-    lmp->error->all(FLERR, ("neigh_modify size_classes: " + wrong + " (" + expected + ")").c_str());
-  return n + 1;
+  if (!wrong.empty()) fail(wrong + " (" + expected + ")");
+  return static_cast<int>(n) + 1;
 }
 
 void Neighbor::granular_multi_no_newton(NeighList *list)

@@ -200,7 +200,17 @@ RESTART_FILES = [("restart_good", restart_deck(None)),
                  ("restart_zeros", restart_deck(b"\0" * 4096)),
                  ("restart_random", restart_deck(bytes((i * 2654435761) % 251 for i in range(5000))))] + \
                 [("restart_cut_%d" % p, restart_deck(p)) for p in (1, 5, 20, 50, 80, 95, 99)]
-CASES = SIZES + MODULI + STRENGTHS + GEOMETRY + MISSING + QUASI_STATIC + DATA_FILES + RESTART_FILES
+# neighbour lists by size class: any bounds give style bin's lists; bad bounds stop at neigh_modify
+NEIGHBOR = replacing("neighbor        0.0001 bin\nneigh_modify    delay 0",
+                     multi_auto="neighbor 0.0001 multi\nneigh_modify delay 0 size_classes auto",
+                     multi_bounds="neighbor 0.0001 multi\nneigh_modify delay 0 size_classes 2 0.0005 0.001",
+                     multi_bound_tiny="neighbor 0.0001 multi\nneigh_modify delay 0 size_classes 1 1e-30",
+                     size_classes_decreasing="neighbor 0.0001 multi\nneigh_modify delay 0 size_classes 2 0.001 0.0005",
+                     size_classes_zero="neighbor 0.0001 multi\nneigh_modify delay 0 size_classes 1 0",
+                     size_classes_nan="neighbor 0.0001 multi\nneigh_modify delay 0 size_classes 1 nan",
+                     size_classes_too_few="neighbor 0.0001 multi\nneigh_modify delay 0 size_classes 3 1e-4",
+                     size_classes_word="neighbor 0.0001 multi\nneigh_modify delay 0 size_classes many")
+CASES = SIZES + MODULI + STRENGTHS + GEOMETRY + MISSING + QUASI_STATIC + NEIGHBOR + DATA_FILES + RESTART_FILES
 SIGNALS = ("terminate called", "what():", "Segmentation fault", "core dumped", "Signal: ", "Aborted")
 
 
@@ -277,7 +287,8 @@ def run_all(liggghts, work, ranks, names):
 # on the box's face or nearly coincident fly out of the box, which stops the run by name).
 MUST_RUN = {"strength_low_edge", "strength_high_edge", "weibull_low_edge", "d0_edge", "cv_edge", "scale_edge",
             "dmin_edge", "dmin_zero", "fines_edge", "damp_edge", "servo_stress_edge", "servo_rate_edge",
-            "dt_fraction_edge", "dt_growth_edge", "data_good", "restart_good", "density_huge"}
+            "dt_fraction_edge", "dt_growth_edge", "data_good", "restart_good", "density_huge", "multi_auto",
+            "multi_bounds", "multi_bound_tiny"}
 MUST_STOP = {"diameter_zero", "diameter_negative", "diameter_nan", "diameter_inf", "density_zero",
              "density_negative", "density_nan", "density_zero_outside_group", "youngs_zero", "youngs_negative", "youngs_nan", "strength_zero",
              "strength_negative", "strength_nan", "strength_inf", "strength_tiny", "weibull_tiny", "d0_tiny",
@@ -285,7 +296,9 @@ MUST_STOP = {"diameter_zero", "diameter_negative", "diameter_nan", "diameter_inf
              "no_friction", "no_pair_coeff", "one_type_material", "damp_one", "servo_stress_zero",
              "servo_walls_crossed", "servo_velocity_huge", "dt_fraction_zero", "data_truncated",
              "data_not_a_number", "data_zero_diameter", "data_missing_columns", "data_empty", "restart_text",
-             "restart_empty", "restart_zeros", "restart_random"} | {"restart_cut_%d" % p for p in (1, 5, 20, 50, 80, 95, 99)}
+             "restart_empty", "restart_zeros", "restart_random", "size_classes_decreasing", "size_classes_zero",
+             "size_classes_nan", "size_classes_too_few", "size_classes_word"} | \
+    {"restart_cut_%d" % p for p in (1, 5, 20, 50, 80, 95, 99)}
 
 
 @variants(*each_rank_count(1, 2), timeout=900)

@@ -26,11 +26,16 @@ from test_penetration import push, prepare_chamber, read_rows  # noqa: E402
 FORCE_TOLERANCE = 1e-7
 
 
-def total_neighbors(output):
-    """The pairs of the last neighbour list (LIGGGHTS' 'Total # of neighbors' after the last run)."""
-    found = re.findall(r"^Total # of neighbors = (\d+)", output, re.M)
-    check(found, "the run printed its neighbour totals")
-    return int(found[-1])
+def run_summary(output, label):
+    """The value of LIGGGHTS' last 'LABEL = value' line after a run ('Total # of neighbors', 'Ave
+    neighs/atom', 'Neighbor list builds': the last neighbour list's)."""
+    found = re.findall(r"^%s = (\S+)" % re.escape(label), output, re.M)
+    check(found, "the run printed '%s'" % label)
+    return float(found[-1])
+
+
+def neighbors_per_atom(out_bin, out_multi):
+    return "Ave neighs/atom: %.2f (bin) %.2f (multi)" % tuple(run_summary(o, "Ave neighs/atom") for o in (out_bin, out_multi))
 
 
 def burst_run(liggghts, work, style, ranks, boundary="p p p"):
@@ -61,9 +66,9 @@ def case_burst(liggghts, work, ranks, boundary):
     box = "p p p" if boundary == "periodic" else "m m m"
     out_bin, bin_rows = burst_run(liggghts, os.path.join(work, "bin"), "bin", ranks, box)
     out_multi, multi_rows = burst_run(liggghts, os.path.join(work, "multi"), "multi", ranks, box)
-    pairs = total_neighbors(out_bin)
-    check(total_neighbors(out_multi) == pairs > 0, "the same %d pairs in the last lists" % pairs)
-    builds = [int(re.findall(r"^Neighbor list builds = (\d+)", o, re.M)[-1]) for o in (out_bin, out_multi)]
+    pairs = run_summary(out_bin, "Total # of neighbors")
+    check(run_summary(out_multi, "Total # of neighbors") == pairs > 0, "the same %d pairs in the last lists" % pairs)
+    builds = [run_summary(o, "Neighbor list builds") for o in (out_bin, out_multi)]
     check(builds[0] == builds[1] >= 20, "%d neighbour builds in the run, each carrying the contact history" % builds[1])
     radii = sorted(set(round(r["radius"], 12) for r in bin_rows))
     check(radii[-1] / radii[0] > 4, "radii from %.3g to %.3g m" % (radii[0], radii[-1]))
@@ -72,8 +77,7 @@ def case_burst(liggghts, work, ranks, boundary):
     torque = largest_difference(bin_rows, multi_rows, ("tqx", "tqy", "tqz"))
     check(force <= FORCE_TOLERANCE and torque <= FORCE_TOLERANCE,
           "forces agree to %.2g and torques to %.2g of the largest (tolerance %.0g)" % (force, torque, FORCE_TOLERANCE))
-    print("Ave neighs/atom: %.2f (bin) %.2f (multi)" % tuple(
-        float(re.findall(r"^Ave neighs/atom = (\S+)", o, re.M)[-1]) for o in (out_bin, out_multi)))
+    print(neighbors_per_atom(out_bin, out_multi))
 
 
 @variants(*each_rank_count(1, 2), timeout=600)
@@ -97,8 +101,7 @@ def case_cone(liggghts, work, ranks):
     check(len(touching) >= 10 and worst < 1e-5,
           "q_c over %d rows down to 1 D_c (%d with the cone in the sand, up to %.3g MPa) agrees to %.2g"
           % (len(pairs), len(touching), scale / 1e6, worst))
-    print("Ave neighs/atom: %.2f (bin) %.2f (multi)" % tuple(
-        float(re.findall(r"^Ave neighs/atom = (\S+)", o, re.M)[-1]) for o in (out_bin, out_multi)))
+    print(neighbors_per_atom(out_bin, out_multi))
 
 if __name__ == "__main__":
     test_main(globals(), sys.argv[1:])

@@ -7,6 +7,7 @@ On 1 and 2 ranks: grains break in bursts, tags stay unique (fix crush's check_ta
 balance exactly: every fragment and the removed volume add up to the mothers of the event log.
 
   python3 test_own_decks.py LIGGGHTS WORKDIR CASE [ARG ...]"""
+import collections
 import math
 import os
 import re
@@ -26,6 +27,28 @@ def tutorials(liggghts):
     """LIGGGHTS' tutorials in the source copy beside the built binary."""
     return os.path.join(os.path.dirname(os.path.abspath(liggghts)), "liggghts-3.8.0", "examples", "LIGGGHTS",
                         "Tutorials_public")
+
+
+def copy_tutorial(liggghts, name, work):
+    """The tutorial's folder copied afresh to work/deck; returns the copy."""
+    source = os.path.join(tutorials(liggghts), name)
+    if not os.path.isdir(source):
+        raise AssertionError("LIGGGHTS' tutorial %s is missing from the source copy: %s" % (name, source))
+    folder = os.path.join(work, "deck")
+    if os.path.isdir(folder):
+        shutil.rmtree(folder)
+    shutil.copytree(source, folder)
+    return folder
+
+
+def largest_burst(events):
+    """The most events logged in one step."""
+    return max(collections.Counter(e["step"] for e in events).values())
+
+
+def check_unique_tags(name, rows):
+    tags = [int(r["id"]) for r in rows]
+    check(len(tags) == len(set(tags)), "%s: %d particles, every tag unique" % (name, len(tags)))
 
 
 def own_deck_lines():
@@ -80,14 +103,8 @@ def with_crushing(text, settings, after):
 @variants(*[(name, ranks) for name in TUTORIALS for ranks in (1, 2)], timeout=300)
 def case_tutorial(liggghts, work, name, ranks):
     """One tutorial with crushing added, on 1 or 2 ranks: bursts of events, unique tags, exact books."""
-    source = os.path.join(tutorials(liggghts), name)
-    if not os.path.isdir(source):
-        raise AssertionError("LIGGGHTS' tutorial %s is missing from the source copy: %s" % (name, source))
     deck_name, settings, edits, after = TUTORIALS[name]
-    folder = os.path.join(work, "deck")
-    if os.path.isdir(folder):
-        shutil.rmtree(folder)
-    shutil.copytree(source, folder)
+    folder = copy_tutorial(liggghts, name, work)
     text = open(os.path.join(folder, deck_name)).read()
     for old, new in edits:
         check(old in text, "the tutorial has '%s'" % old.strip())
@@ -97,13 +114,9 @@ def case_tutorial(liggghts, work, name, ranks):
     events = read_events(os.path.join(work, "run", "crush_events.csv"))
     check(printed(out, "EVENTS") == len(events) and len(events) >= 20,
           "%s: %d events, all in the log" % (name, len(events)))
-    steps = {}
-    for e in events:
-        steps[e["step"]] = steps.get(e["step"], 0) + 1
-    check(max(steps.values()) >= 3, "%s: bursts (up to %d events in one step)" % (name, max(steps.values())))
+    check(largest_burst(events) >= 3, "%s: bursts (up to %d events in one step)" % (name, largest_burst(events)))
     rows = read_dump(os.path.join(work, "run", "final.dump"))[-1][2]
-    tags = [int(r["id"]) for r in rows]
-    check(len(tags) == len(set(tags)), "%s: %d particles, every tag unique" % (name, len(tags)))
+    check_unique_tags(name, rows)
     fragments = [r for r in rows if r["f_crush[2]"] >= 1]
     check(len(fragments) == 14 * len(events), "%s: 14 fragments an event (%d)" % (name, len(fragments)))
     volume = lambda d: math.pi * d ** 3 / 6  # noqa: E731
@@ -133,11 +146,7 @@ def case_outflow(liggghts, work, name, ranks):
     break, tags stay unique, and the books hold with the volume that left: particles +
     removed volume + outflow = the volume the insertion fix created, to 1e-9."""
     deck_name, settings, after, density, leaves = OUTFLOW_TUTORIALS[name]
-    source = os.path.join(tutorials(liggghts), name)
-    folder = os.path.join(work, "deck")
-    if os.path.isdir(folder):
-        shutil.rmtree(folder)
-    shutil.copytree(source, folder)
+    folder = copy_tutorial(liggghts, name, work)
     text = open(os.path.join(folder, deck_name)).read()
     unfix = re.search(r"^unfix\s+ins\s*$", text, re.M)
     check(unfix is not None, "%s stops inserting with 'unfix ins'" % name)
@@ -147,15 +156,11 @@ def case_outflow(liggghts, work, name, ranks):
     open(os.path.join(folder, deck_name), "w").write(text)
     out = run_deck(liggghts, os.path.join(folder, deck_name), os.path.join(work, "run"), ranks=int(ranks))
     events = read_events(os.path.join(work, "run", "crush_events.csv"))
-    steps = {}
-    for e in events:
-        steps[e["step"]] = steps.get(e["step"], 0) + 1
     check(len(events) >= 20,
           "%s on %s rank(s) ran to its end: %d events, up to %d in one step" % (name, ranks, len(events),
-                                                                             max(steps.values())))
+                                                                             largest_burst(events)))
     rows = read_dump(os.path.join(work, "run", "final.dump"))[-1][2]
-    tags = [int(r["id"]) for r in rows]
-    check(len(tags) == len(set(tags)), "%s: %d particles, every tag unique" % (name, len(tags)))
+    check_unique_tags(name, rows)
     left = printed(out, "OUTFLOW_N")
     if leaves:
         check(left > 0 and "leave the box at step" in out, "%d particles left the box, and the log says so" % left)
@@ -181,11 +186,7 @@ def case_heat_transfer(liggghts, work, bed, ranks):
     lost only the removed volumes' share, rho c T V_removed; with the half bed (conduction conserves
     sum(m c T)) each event step changes it by -rho c T V_removed, with T between 300 and 800 K."""
     ranks = int(ranks)
-    source = os.path.join(tutorials(liggghts), "heatTransfer_1")
-    folder = os.path.join(work, "deck")
-    if os.path.isdir(folder):
-        shutil.rmtree(folder)
-    shutil.copytree(source, folder)
+    folder = copy_tutorial(liggghts, "heatTransfer_1", work)
     text = open(os.path.join(folder, "in.heatGran")).read()
     temperature = "set             region halfbed property/atom Temp 800."
     check(temperature in text, "the tutorial sets the half bed to 800 K")
