@@ -44,7 +44,8 @@ using namespace FixConst;
 namespace {
 
 enum Output { EVENTS = 0, REMOVED_VOLUME = 1, LARGEST_RATIO = 2, REPLACE_SECONDS = 3, CHECKED_STEPS = 4,
-              OUTFLOW_VOLUME = 5, OUTFLOW_PARTICLES = 6, NOUTPUT = 7 };  // vector
+              OUTFLOW_VOLUME = 5, OUTFLOW_PARTICLES = 6, TRUE_MASS = 7, LARGEST_DENSITY_SCALE = 8,
+              NOUTPUT = 9 };  // vector
 
 crush::CrushSettings parse(Fix *fix, Error *error, int me, int narg, char **arg)
 {
@@ -79,7 +80,7 @@ FixCrush::FixCrush(LAMMPS *lmp, int narg, char **arg) :
   settings_(parse(this, error, comm->me, narg, arg)),
   strength_(settings_.distribution, settings_.sigma_lim0, settings_.cv, settings_.weibull_m, settings_.seed),
   nfrag_(static_cast<int>(crush::fragment_layout(settings_.layout, 1.0).size())),
-  region_(NULL), fix_data_(NULL), data_id_(NULL), limit_factor_(NULL), irregular_(NULL), log_(NULL),
+  region_(NULL), fix_data_(NULL), data_id_(NULL), fix_true_density_(NULL), true_density_id_(NULL), limit_factor_(NULL), irregular_(NULL), log_(NULL),
   events_total_(0), removed_volume_(0.0), outflow_volume_(0.0), outflow_particles_(0), outflow_reported_(false),
   max_ratio_(0.0), local_max_ratio_(0.0), max_ratio_step_(-1),
   smallest_fragment_diameter_(0.0), initial_largest_diameter_(0.0), next_tag_(1), replace_seconds_(0.0),
@@ -157,6 +158,8 @@ FixCrush::~FixCrush()
   memory->destroy(limit_factor_);
   if (data_id_ && modify->find_fix(data_id_) >= 0) modify->delete_fix(data_id_);
   delete[] data_id_;
+  if (true_density_id_ && modify->find_fix(true_density_id_) >= 0) modify->delete_fix(true_density_id_);
+  delete[] true_density_id_;
 }
 
 // Per-atom data in a restartable fix property/atom: sigma_lim (-1 = not drawn yet), generation, ratio.
@@ -170,6 +173,7 @@ void FixCrush::post_create()
   modify->add_fix(11, const_cast<char **>(fixarg));
   fix_data_ = static_cast<FixPropertyAtom *>(
       modify->find_fix_property(data_id_, "property/atom", "vector", 3, 0, style));
+  create_true_density();
 }
 
 int FixCrush::setmask()
@@ -186,6 +190,7 @@ void FixCrush::init()
   check_particles();
   find_bodies();
   check_bodies();
+  find_true_density();
   find_inherited_state();
   outflow_reported_ = false;
   setup_limit_factors();
@@ -386,6 +391,7 @@ void FixCrush::pre_force(int)
   const bool renumbered = refresh_needed_ || neighbor->ago == 0;
   if (renumbered) {
     refresh_recorder();
+    fill_true_densities();
     draw_missing_strengths();
     update_strength_terms();
     if (settings_.adaptive) update_ratio_growth();
@@ -560,6 +566,13 @@ void FixCrush::check_time_step(double smallest_radius) const
   double density_all = 0.0;
   MPI_Allreduce(&density_min, &density_all, 1, MPI_DOUBLE, MPI_MIN, world);
   if (!(density_all < 1e300)) return;
+  // Scaled fragments keep their grain's r sqrt(rho), on which alone the Rayleigh time depends: the
+  // particles present bound every fragment to come (radius r sqrt(rho), density 1).
+  const bool scaled = settings_.fragment_density == crush::FragmentDensity::scaled;
+  if (scaled) {
+    smallest_radius = smallest_rayleigh_product();
+    density_all = 1.0;
+  }
   // Only the types of particles present count (wall types are not particles).
   std::vector<int> present(atom->ntypes + 1, 0), present_all(atom->ntypes + 1, 0);
   for (int i = 0; i < atom->nlocal; i++) present[atom->type[i]] = 1;
@@ -576,13 +589,18 @@ void FixCrush::check_time_step(double smallest_radius) const
     }
   }
   if (update->dt > dt_limit) {
+    char which[160];
+    if (scaled)
+      snprintf(which, sizeof(which), "r sqrt(rho) %g m sqrt(kg/m^3), the smallest present, which 'fragment_density "
+               "scaled' fragments keep", smallest_radius);
+    else
+      snprintf(which, sizeof(which), "radius %g m, %s", smallest_radius,
+               settings_.dmin > 0.0 ? "a fragment of a grain at dmin" : "present after crushing");
     char msg[512];
     snprintf(msg, sizeof(msg),
              "fix crush: time step %g s exceeds %g s, %g of the Rayleigh time of the smallest particle "
-             "that can exist (radius %g m%s): reduce the timestep, raise 'dmin', or change "
-             "'rayleigh_fraction'",
-             update->dt, dt_limit, settings_.rayleigh_fraction, smallest_radius,
-             settings_.dmin > 0.0 ? ", a fragment of a grain at dmin" : ", present after crushing");
+             "that can exist (%s): reduce the timestep, raise 'dmin', or change 'rayleigh_fraction'",
+             update->dt, dt_limit, settings_.rayleigh_fraction, which);
     error->all(FLERR, msg);
   }
 }
@@ -602,6 +620,8 @@ double FixCrush::compute_vector(int n)
   if (n == CHECKED_STEPS) return static_cast<double>(checked_steps_);
   if (n == OUTFLOW_VOLUME) return outflow_volume_;
   if (n == OUTFLOW_PARTICLES) return static_cast<double>(outflow_particles_);
+  if (n == TRUE_MASS) return true_mass();
+  if (n == LARGEST_DENSITY_SCALE) return largest_density_scale();
   return replace_seconds_;
 }
 

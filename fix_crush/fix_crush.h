@@ -122,6 +122,14 @@ class FixCrush : public Fix {
   void check_bodies() const;
   void body_error(tagint tag, const char *body) const;
   void inherit_state(int mother, int fragment, double mass_share) const;
+  // fragment_density scaled: every particle's true density (fix_crush_density.cpp)
+  void create_true_density();
+  void find_true_density();
+  void fill_true_densities();
+  double true_density(int i) const;
+  double true_mass() const;
+  double largest_density_scale() const;
+  double smallest_rayleigh_product() const;
 
   crush::CrushSettings settings_;
   crush::StrengthDraw strength_;
@@ -131,6 +139,8 @@ class FixCrush : public Fix {
   std::vector<InheritedState> inherited_;  // every other fix property/atom, with its rule
   std::vector<class Fix *> body_fixes_;    // fix multisphere and fix rigid: their grains cannot break
   char *data_id_;
+  class FixPropertyAtom *fix_true_density_;  // fragment_density scaled: per atom, its true density
+  char *true_density_id_;
   ContactLoadRecorder recorder_;
   double **limit_factor_;        // per type pair: (4 E'/3)^2
   std::vector<double> load_;         // per local and ghost atom: largest F_n (4 E'/3)^2 / r'^2 this step

@@ -3,7 +3,8 @@
    doc/fix_crush.txt): the fragments, what they inherit, and the books that prove every event was
    replaced exactly once.
 
-   A fragment is a piece of its mother: it takes her type, group, velocity, spin, image and density,
+   A fragment is a piece of its mother: it takes her type, group, velocity, spin, image and density
+   (with 'fragment_density scaled' raised by (R/r)^2, crush_fragment_density.h; its true density kept),
    and the values of every fix property/atom that describe the material's state (temperature, a
    user's own properties), copied. Values that sum over a particle (heat flux and source, CFD drag)
    go by the fragment's mass share, so that the fragments hold what the mother held less the removed
@@ -23,6 +24,7 @@
 #include "atom_vec.h"
 #include "comm.h"
 #include "crush_constants.h"
+#include "crush_fragment_density.h"
 #include "crush_fragments.h"
 #include "crush_model_error.h"
 #include "domain.h"
@@ -62,7 +64,7 @@ void FixCrush::find_inherited_state()
         wall_histories.push_back(prefix + std::string(modify->fix[k]->id));
   for (int k = 0; k < modify->nfix; k++) {
     FixPropertyAtom *fix = dynamic_cast<FixPropertyAtom *>(modify->fix[k]);
-    if (!fix || fix == fix_data_) continue;
+    if (!fix || fix == fix_data_ || fix == fix_true_density_) continue;
     const std::string name = fix->id;
     Inheritance rule = Inheritance::COPY;
     if (std::find(wall_histories.begin(), wall_histories.end(), name) != wall_histories.end())
@@ -242,7 +244,7 @@ double FixCrush::create_fragments(int mother, tagint first_tag, int generation)
   // Copy the mother: creating atoms may reallocate every per-atom array.
   const int type = atom->type[mother], mask = atom->mask[mother], tag = atom->tag[mother];
   const tagint image = atom->image[mother];
-  const double R = atom->radius[mother], density = atom->density[mother];
+  const double R = atom->radius[mother], density = atom->density[mother], rho_true = true_density(mother);
   double xm[3], vm[3], wm[3];
   for (int k = 0; k < 3; k++) {
     xm[k] = atom->x[mother][k];
@@ -270,10 +272,10 @@ double FixCrush::create_fragments(int mother, tagint first_tag, int generation)
     atom->mask[n] = mask;
     atom->image[n] = image;
     atom->radius[n] = r;
-    atom->density[n] = density;
+    atom->density[n] = crush::fragment_density(settings_.fragment_density, density, R, r);
     const double volume = crush::sphere_volume(2.0 * r);
     removed -= volume;
-    atom->rmass[n] = density * volume;
+    atom->rmass[n] = atom->density[n] * volume;
     for (int k = 0; k < 3; k++) {
       atom->v[n][k] = vm[k];
       atom->omega[n][k] = wm[k];
@@ -284,6 +286,7 @@ double FixCrush::create_fragments(int mother, tagint first_tag, int generation)
         modify->fix[m]->set_arrays(n);
       }
     inherit_state(mother, n, volume / crush::sphere_volume(2.0 * R));
+    if (fix_true_density_) fix_true_density_->vector_atom[n] = rho_true;
     double *data = fix_data_->array_atom[n];
     try {
       data[STRENGTH] = settings_.size_scaled(strength_.draw(atom->tag[n], generation), 2.0 * r);

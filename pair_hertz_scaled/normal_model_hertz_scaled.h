@@ -76,13 +76,14 @@ namespace ContactModels {
   public:
     NormalModel(LAMMPS *lmp, IContactHistorySetup *hsetup, class ContactModelBase *c) :
       NormalModelBase(lmp, hsetup, c), normal_coeff(NULL), shear_coeff(NULL),
-      betaeff(NULL), viscous_damping(false), stiffness_monitor(lmp)
+      betaeff(NULL), viscous_damping(false), dedicated_loop(true), stiffness_monitor(lmp)
     {
     }
 
     void registerSettings(Settings &settings)
     {
       settings.registerOnOff("viscous_damping", viscous_damping, false);
+      settings.registerOnOff("dedicated_loop", dedicated_loop, true);
     }
 
     inline void postSettings(IContactHistorySetup *, ContactModelBase *) {}
@@ -147,11 +148,19 @@ namespace ContactModels {
     void beginPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
     void endPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
 
+    // What the pair pass of hertz/scaled + mindlin/scaled reads (pair_gran_hertz_mindlin_scaled_pass.h).
+    inline double **normalCoefficients() const { return normal_coeff; }
+    inline double **shearCoefficients() const { return shear_coeff; }
+    inline bool viscousDamping() const { return viscous_damping; }
+    inline bool dedicatedLoop() const { return dedicated_loop; }
+    inline const ContactStiffnessRecorder *stiffnessRecorder() const { return stiffness_monitor.recorder(); }
+
   protected:
     double **normal_coeff;
     double **shear_coeff;
     double **betaeff;
     bool viscous_damping;
+    bool dedicated_loop;  // 'dedicated_loop off': the pair forces by LIGGGHTS' generic loop
     ContactStiffnessMonitor stiffness_monitor;
   };
 

@@ -106,6 +106,10 @@ namespace ContactModels {
     inline void beginPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
     inline void endPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
 
+    // What the pair pass of hertz/scaled + mindlin/scaled reads (pair_gran_hertz_mindlin_scaled_pass.h).
+    inline double **frictionCoefficients() const { return coeffFrict; }
+    inline int historyOffset() const { return history_offset; }
+
   private:
     double **coeffFrict;
     int history_offset;

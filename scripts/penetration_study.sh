@@ -4,9 +4,9 @@
 # q_c, sleeve friction and gradings gathered in OUT_DIR/study.csv.
 #   bash scripts/penetration_study.sh [OUT_DIR (default runs/penetration)] [cases...]
 # A case is NAME (one of the table below) or a spec density:N:crushing:v:width:ranks[:distribution
-# [:sigma_v[:seed]]] (the strength distribution of in.grains, default normal_clipped_originals; the
-# vertical stress, Pa, default 1e5; the seed of the chamber's grains and of their strengths, default
-# the decks' 15485863). Default: every named case. Chambers are prepared once per (density, N, width,
+# [:sigma_v[:seed[:fragment_density]]]] (the strength distribution of in.grains, default
+# normal_clipped_originals; the vertical stress, Pa, default 1e5; the seed of the chamber's grains and
+# of their strengths, default the decks' 15485863; the fragments' density, true or scaled, default true). Default: every named case. Chambers are prepared once per (density, N, width,
 # sigma_v, seed) in OUT_DIR/chambers and copied.
 # The case "figures" draws doc/penetration.md's figures from the cases already run
 # (OUT_DIR/figures: q_c, events and gradings of dense_region, dense_off, loose_region, loose_off; the
@@ -42,12 +42,18 @@ declare -A spec=(
   [N80_region_s3]=dense:80:region:2:10:2:normal_clipped_originals:1e5:373587883
   [N80_off_s2]=dense:80:0:2:10:2:normal_clipped_originals:1e5:179424673
   [N80_off_s3]=dense:80:0:2:10:2:normal_clipped_originals:1e5:373587883
+  [dense_region_s2]=dense:60:region:2:10:2:normal_clipped_originals:1e5:179424673
+  [dense_region_s3]=dense:60:region:2:10:2:normal_clipped_originals:1e5:373587883
+  [dense_region_scaled]=dense:60:region:2:10:2:normal_clipped_originals:1e5:15485863:scaled   # the fragments' time step knob
+  [dense_region_scaled_s2]=dense:60:region:2:10:2:normal_clipped_originals:1e5:179424673:scaled
+  [dense_region_scaled_s3]=dense:60:region:2:10:2:normal_clipped_originals:1e5:373587883:scaled
 )
 order="dense_region dense_off loose_region loose_off N80_region N80_off N80_everywhere N80_v1 N80_v4 N80_w15"
 order="$order N80_off_np1 N80_region_np1 dense_region_normal dense_region_1MPa dense_off_1MPa"
 order="$order N80_region_s2 N80_region_s3 N80_off_s2 N80_off_s3"
+order="$order dense_region_s2 dense_region_s3 dense_region_scaled dense_region_scaled_s2 dense_region_scaled_s3"
 cases=${*:-$order}
-[ -f "$out/study.csv" ] || echo "case,density,N,D_c_over_d50,crushing,v,width,ranks,distribution,sigma_v,seed,grains,particles,events,events_loaded,steps,seconds,q_c_MPa,q_c_sd_MPa,f_s_kPa,I_G_near,I_G_far" > "$out/study.csv"
+[ -f "$out/study.csv" ] || echo "case,density,N,D_c_over_d50,crushing,v,width,ranks,distribution,sigma_v,seed,grains,particles,events,events_loaded,steps,seconds,q_c_MPa,q_c_sd_MPa,f_s_kPa,I_G_near,I_G_far,fragment_density" > "$out/study.csv"
 # OUT_DIR/figures/<N>/: the named cases' files together, drawn by post/penetration.py
 draw() {
   local n=$1 tag=$2; shift 2
@@ -63,8 +69,9 @@ for name in $cases; do
     continue
   fi
   s=${spec[$name]:-$name}
-  IFS=: read -r density N crushing v width ranks distribution sigma_v seed <<< "$s"
+  IFS=: read -r density N crushing v width ranks distribution sigma_v seed fragment_density <<< "$s"
   distribution=${distribution:-normal_clipped_originals} sigma_v=${sigma_v:-1e5} seed=${seed:-15485863}
+  fragment_density=${fragment_density:-true}
   [ -n "${ranks:-}" ] || { echo "unknown case $name (named: $order; or density:N:crushing:v:width:ranks)" >&2; exit 2; }
   chamber=$out/chambers/${density}_N${N}_w${width}_s${sigma_v}_seed${seed}
   if [ ! -f "$chamber/penetration/chamber_${density}_N${N}.restart" ]; then
@@ -81,7 +88,8 @@ for name in $cases; do
   rm -rf "$dir" && mkdir -p "$dir/penetration" && cp -r "$here/examples/fontainebleau" "$dir/"
   cp "$here"/examples/penetration/in.* "$here"/examples/penetration/*.py "$chamber"/penetration/chamber_* "$dir/penetration/"
   vars=(-var density "$density" -var N "$N" -var crushing "$crushing" -var v "$v" -var width "$width"
-        -var distribution "$distribution" -var sigma_v "$sigma_v" -var seed "$seed" -var label "$name")
+        -var distribution "$distribution" -var sigma_v "$sigma_v" -var seed "$seed" -var label "$name"
+        -var fragment_density "$fragment_density")
   echo "== $name: mpirun -np $ranks liggghts -in in.cone ${vars[*]}"
   start=$(date +%s%N)
   (cd "$dir/penetration" && mpirun -np "$ranks" "$liggghts" -in in.cone "${vars[@]}" -log log.liggghts > screen.txt 2>&1) \
@@ -98,7 +106,7 @@ rows = list(csv.DictReader(open(sys.argv[1])))
 summary = next(csv.DictReader(open(sys.argv[2])))
 grains = int(float(open(sys.argv[3]).read().split("grains0 equal")[1].split()[0]))
 steps = int(float(re.search(r"CHECKED STEPS \\S+ OF (\\S+)", open(sys.argv[4]).read()).group(1)))
-print("$name,$density,$N,%.3f,$crushing,$v,$width,$ranks,$distribution,$sigma_v,$seed,%d,%d,%d,%s,%d,$seconds,%s,%s,%s,%s,%s" % (
+print("$name,$density,$N,%.3f,$crushing,$v,$width,$ranks,$distribution,$sigma_v,$seed,%d,%d,%d,%s,%d,$seconds,%s,%s,%s,%s,%s,$fragment_density" % (
     0.0357 / (0.21e-3 * $N), grains, int(float(rows[-1]["particles"])), int(float(rows[-1]["events"])),
     summary["events_loaded"], steps,
     summary["q_c_MPa"], summary["q_c_sd_MPa"], summary["f_s_kPa"], summary["I_G_near"], summary["I_G_far"]))

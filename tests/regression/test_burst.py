@@ -2,7 +2,7 @@
 """Bursts: many grains breaking in one step, on periodic and processor boundaries, on any number of
 ranks, and a restart written with the replacement still pending (tests/regression/burst/).
 
-  python3 test_burst.py LIGGGHTS WORKDIR CASE RANKS     CASE: all, half, restart or inherit
+  python3 test_burst.py LIGGGHTS WORKDIR CASE RANKS     CASE: all, half, restart, inherit or density
   python3 test_burst.py --list
 
 Every case asserts: every tag unique, particles = initial + 13 x events at every thermo row, the
@@ -161,6 +161,53 @@ def case_inherit(liggghts, work, ranks):
              != [float(m) for m in (lambda t: (t, t, 2 * t, -t))(mother.get(int(r["id"]), int(r["id"])))]]
     check(not wrong, "on %d rank(s) all %d fragments hold their mother's scalar and vector, the %d grains their "
           "own (%d wrong)" % (ranks, len(mother), len(final) - len(mother), len(wrong)))
+
+
+def check_densities(work, log, final, ranks):
+    """fragment_density scaled: each fragment's density is its mother's (2650) times (R/r)^2 and its mass
+    that density times its volume; every true density is 2650; fix crush's mass at true density is
+    2650 times the volume of its group (type 2), the largest density scale (R/r_small)^2."""
+    rho, R = 2650.0, DIAMETER / 2
+    fragments = {int(e["fragment_%d" % (f + 1)]) for e in log for f in range(FRAGMENTS)}
+    wrong = []
+    for r in final:
+        scale = (R / r["radius"]) ** 2 if r["id"] in fragments else 1.0
+        volume = math.pi / 6 * (2 * r["radius"]) ** 3
+        if (abs(r["density"] - rho * scale) > 1e-12 * rho * scale
+                or abs(r["mass"] - rho * scale * volume) > 1e-12 * rho * scale * volume
+                or r["f_crush_true_density_crush"] != rho):
+            wrong.append(r["id"])
+    check(not wrong, "on %d rank(s) the %d fragments have density 2650 (R/r)^2 and mass to match, every particle "
+          "true density 2650 (%d wrong)" % (ranks, len(fragments), len(wrong)))
+    thermo = read_thermo(os.path.join(work, "log.liggghts"))[-1]
+    volume = sum(math.pi / 6 * (2 * r["radius"]) ** 3 for r in final if r["type"] == 2)
+    scaled = sum(r["mass"] for r in final if r["type"] == 2)
+    check(abs(thermo["crush[8]"] - rho * volume) < 1e-12 * rho * volume,
+          "the group's (type 2) mass at true density %.9g kg = 2650 x its volume; the scaled mass is %.4g "
+          "times it" % (thermo["crush[8]"], scaled / thermo["crush[8]"]))
+    small = 1 / 0.2300932 ** 2
+    check(abs(thermo["crush[9]"] - small) < 1e-5 * small,
+          "largest density scale %.6f = (R / r_small)^2 = %.6f" % (thermo["crush[9]"], small))
+
+
+@variants(*each_rank_count(1, 2, 3, 4), timeout=600)
+def case_density(liggghts, work, ranks):
+    """fragment_density scaled (in.burst_density): the breakable half bursts; the fragments' densities,
+    masses and true densities, and fix crush's outputs of them; the run continued from the restart
+    written with the replacement pending gives the same."""
+    ranks = int(ranks)
+    first = os.path.join(work, "uninterrupted")
+    types = run_burst(liggghts, "in.burst_density", first, "half", ranks)
+    log, final = check_run(first, "half", ranks, types)
+    check_densities(first, log, final, ranks)
+    second = os.path.join(work, "continued")
+    run_burst(liggghts, "in.burst_density_restart", second, "half", ranks, [os.path.join(first, "burst.restart")])
+    log2, final2 = check_run(second, "half", ranks, types)
+    check_densities(second, log2, final2, ranks)
+    same = len(final) == len(final2) and all(
+        a["id"] == b["id"] and a["density"] == b["density"] and max(abs(a[k] - b[k]) for k in "xyz") < 1e-9
+        for a, b in zip(final, final2))
+    check(same, "the continued run ends with the same %d particles and densities" % len(final))
 
 
 if __name__ == "__main__":

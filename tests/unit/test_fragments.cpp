@@ -5,7 +5,9 @@
 #include <vector>
 
 #include "crush_constants.h"
+#include "crush_fragment_density.h"
 #include "crush_fragments.h"
+#include "hertz_mindlin_scaled_law.h"
 #include "crush_model_error.h"
 
 using namespace crush;
@@ -117,4 +119,29 @@ TEST(Fragments, RandomRotationsAreUniformOverSO3)
 TEST(Fragments, InvalidRadius)
 {
   EXPECT_THROW(fragment_layout(FragmentLayout::fourteen, 0.0), ModelError);
+}
+
+// fragment_density scaled: rho (R/r)^2 keeps r sqrt(rho), so the Rayleigh time, over generations.
+TEST(FragmentDensity, ScaledKeepsTheGrainsRayleighTimeOverGenerations)
+{
+  const double R0 = 1e-3, rho0 = 2650.0;
+  const crush::ShearMaterial quartz = crush::shear_material(7e10, 0.3);
+  const double grain_time = crush::rayleigh_time_step(R0, rho0, quartz);
+  double R = R0, rho = rho0;
+  for (int generation = 1; generation <= 3; generation++) {
+    const std::vector<crush::Fragment> fragments = crush::fragment_layout(crush::FragmentLayout::fourteen, R);
+    double mass = 0.0;
+    for (const crush::Fragment &f : fragments) {
+      const double rho_f = crush::fragment_density(crush::FragmentDensity::scaled, rho, R, f.radius);
+      EXPECT_NEAR(crush::rayleigh_time_step(f.radius, rho_f, quartz), grain_time, 1e-12 * grain_time);
+      mass += rho_f * std::pow(f.radius, 3);
+    }
+    // The fragments weigh 6 (sqrt2 - 1) + 8 r2/R = 4.326 times their mother.
+    EXPECT_NEAR(mass / (rho * std::pow(R, 3)), 6.0 * (std::sqrt(2.0) - 1.0) + 8.0 * 0.2300932, 1e-6);
+    // The next generation breaks a small fragment.
+    rho = crush::fragment_density(crush::FragmentDensity::scaled, rho, R, fragments.back().radius);
+    R = fragments.back().radius;
+  }
+  // 'true': the mother's density, whatever the size.
+  EXPECT_EQ(crush::fragment_density(crush::FragmentDensity::true_density, rho0, R0, 0.1 * R0), rho0);
 }

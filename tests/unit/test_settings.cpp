@@ -163,6 +163,15 @@ TEST(CrushSettings, CheckTagsIsASwitch)
   EXPECT_NE(error_of(with({"check_tags", "1"})).find("'check_tags' expects 'yes' or 'no'"), std::string::npos);
 }
 
+TEST(CrushSettings, FragmentDensityIsTrueUnlessScaled)
+{
+  EXPECT_EQ(parse_crush_settings(required).fragment_density, FragmentDensity::true_density);
+  EXPECT_EQ(parse_crush_settings(with({"fragment_density", "scaled"})).fragment_density, FragmentDensity::scaled);
+  EXPECT_EQ(parse_crush_settings(with({"fragment_density", "true"})).fragment_density, FragmentDensity::true_density);
+  EXPECT_NE(error_of(with({"fragment_density", "yes"})).find("'fragment_density' expects 'true' or 'scaled', got 'yes'"),
+            std::string::npos);
+}
+
 TEST(KeywordNumber, AcceptsFiniteNumbersOnly)
 {
   double v = 0.0;
