@@ -1,0 +1,176 @@
+#!/usr/bin/env python3
+"""Tests of the calibration tools (doc/calibration.md): post/calibrate.py's fit of fix crush's
+parameters to single-particle crushing tests, its errors on bad data, and the DEM check of
+scripts/calibration_check.sh on a small population.
+
+  test_calibration.py LIGGGHTS WORKDIR CASE     (cases: the case_* functions below)"""
+import json
+import math
+import os
+import subprocess
+import sys
+
+from liggghts_run import check, main, variants
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+REPO = os.path.dirname(os.path.dirname(HERE))
+CALIBRATE = os.path.join(REPO, "post", "calibrate.py")
+SYNTHETIC = os.path.join(REPO, "examples", "calibration", "synthetic.csv")
+# the parameters that examples/calibration/synthetic.csv was drawn from (its header)
+TRUE = {"sigma_lim0": 1e9, "cv": 0.25, "weibull_m": 10.0, "d0": 1.4e-3}
+PYTHON = "/usr/bin/python3" if os.path.exists("/usr/bin/python3") else sys.executable
+
+sys.path.insert(0, os.path.join(REPO, "post"))
+import calibrate  # noqa: E402
+
+
+def calibrate_cli(*args, cwd=None):
+    """post/calibrate.py ARGS: (exit status, stdout, stderr)."""
+    p = subprocess.run([PYTHON, CALIBRATE] + [str(a) for a in args], cwd=cwd, stdout=subprocess.PIPE,
+                       stderr=subprocess.PIPE, universal_newlines=True)
+    return p.returncode, p.stdout, p.stderr
+
+
+def fitted(work, data, *options):
+    out = os.path.join(work, "fit")
+    rc, stdout, stderr = calibrate_cli("single-particle", data, "--out", out, "--bootstrap", 200, *options)
+    check(rc == 0, "single-particle fits %s (exit %d) %s" % (os.path.basename(data), rc, stderr[-500:]))
+    print(stdout)
+    return json.load(open(os.path.join(out, "parameters.json"))), stdout
+
+
+def within(name, value, interval):
+    check(interval[0] <= value <= interval[1], "%s = %g lies in the fit's interval [%g, %g]"
+          % (name, value, interval[0], interval[1]))
+
+
+def case_strength_conversion(liggghts, work):
+    """eq. 5 inverted, against the single-grain deck's F_lim (examples/single_grain/in.single_grain:
+    d = 0.2 mm, E = 7.8 GPa, nu = 0.3 on 210 GPa, 0.29, sigma = 1e8 Pa)."""
+    E_eff = 1.0 / ((1.0 - 0.3 ** 2) / 7.8e9 + (1.0 - 0.29 ** 2) / 210e9)
+    F_deck = (1e8 * math.pi) ** 3 * (3.0 * 0.0001 / (4.0 * E_eff)) ** 2
+    check(abs(calibrate.effective_modulus(7.8e9, 0.3, 210e9, 0.29) / E_eff - 1) < 1e-14, "E' is eq. 4's")
+    check(abs(calibrate.force_from_strength(1e8, 2e-4, E_eff) / F_deck - 1) < 1e-12,
+          "F_lim(sigma_lim = 1e8 Pa) = the deck's %.6g N" % F_deck)
+    check(abs(calibrate.strength_from_force(F_deck, 2e-4, E_eff) / 1e8 - 1) < 1e-12,
+          "that force gives back sigma_lim = 1e8 Pa")
+    # the strength grows as F^(1/3) and as r'^(-2/3) (a wrong r', e.g. d instead of d/2, is off by 2^(2/3))
+    s1 = calibrate.strength_from_force(8.0, 1e-3, E_eff)
+    check(abs(calibrate.strength_from_force(64.0, 1e-3, E_eff) / s1 - 2.0) < 1e-12, "sigma_lim ~ F^(1/3)")
+    check(abs(s1 / calibrate.strength_from_force(8.0, 8e-3, E_eff) - 4.0) < 1e-12, "sigma_lim ~ d^(-2/3)")
+
+
+def case_round_trip(liggghts, work):
+    """The synthetic set (drawn from TRUE) gives back TRUE within the fit's 95% intervals, and those
+    intervals are narrow enough to mean something."""
+    p, stdout = fitted(work, SYNTHETIC, "--d0", TRUE["d0"])
+    within("weibull_m", TRUE["weibull_m"], p["weibull_m_ci"])
+    within("sigma_lim0", TRUE["sigma_lim0"], p["sigma_lim0_ci"])
+    within("cv", TRUE["cv"], p["cv_ci"])
+    width = (p["sigma_lim0_ci"][1] - p["sigma_lim0_ci"][0]) / p["sigma_lim0"]
+    check(width < 0.15, "the sigma_lim0 interval is %.1f%% wide (< 15%%)" % (100 * width))
+    check(p["cv_ci"][1] - p["cv_ci"][0] < 0.15, "the cv interval is narrower than 0.15")
+    check(p["distribution"] == "normal", "the line takes the normal (the data's law): %s" % p["distribution"])
+    check(p["fix_crush"] in stdout and p["fix_crush"].startswith("fix crush all crush sigma_lim0 "),
+          "the fix crush line is printed: " + p["fix_crush"])
+    for name in ("survival.png", "size_effect.png", "strengths.csv"):
+        check(os.path.getsize(os.path.join(work, "fit", name)) > 1000, "wrote " + name)
+
+
+def case_round_trip_weibull(liggghts, work):
+    """Tests drawn from fix crush's weibull (one modulus m = 8 for scatter and size effect, sizes
+    0.5 - 2 mm): the fit gives back m and the mean, and takes the weibull."""
+    data = os.path.join(work, "weibull.csv")
+    rc, _, err = calibrate_cli("synthetic", data, "--sigma_lim0", 2e9, "--cv", 0, "--weibull_m", 8, "--d0", 1e-3,
+                               "--sizes", "0.5e-3,1e-3,2e-3", "--per-size", 40, "--seed", 7,
+                               "--distribution", "weibull")
+    check(rc == 0, "synthetic draws a Weibull set " + err)
+    p, _ = fitted(work, data, "--d0", 1e-3)
+    within("weibull_m", 8.0, p["weibull_m_ci"])
+    within("Weibull shape of the scatter", 8.0, p["weibull_shape_ci"])
+    within("mean strength at d0", 2e9, p["weibull_mean_ci"])
+    check(p["distribution"] == "weibull", "the line takes the weibull: %s" % p["distribution"])
+
+
+def bad_data(work, name, text):
+    path = os.path.join(work, name)
+    open(path, "w").write(text)
+    rc, stdout, stderr = calibrate_cli("single-particle", path, "--out", os.path.join(work, "fit_" + name))
+    check(rc != 0, "%s is refused (exit %d)" % (name, rc))
+    print(stderr.strip())
+    return stderr
+
+
+def rows(sizes, per_size, force=50.0):
+    return "".join("%g,%g\n" % (d, force * (1 + 0.01 * k)) for d in sizes for k in range(per_size))
+
+
+def case_bad_data(liggghts, work):
+    good = rows([1e-3, 2e-3], 10)
+    lines = good.splitlines()
+    e = bad_data(work, "negative_d.csv", "d,F_f\n" + "\n".join(lines[:4] + ["-1e-3,50"] + lines[5:]) + "\n")
+    check("line 6" in e and "d = -1e-3 must be positive" in e, "a negative d is named with its line")
+    e = bad_data(work, "zero_force.csv", "# comment\nd,F_f\n" + "\n".join(lines[:2] + ["1e-3,0"] + lines[3:]) + "\n")
+    check("line 5" in e and "F_f = 0 must be positive" in e, "a zero F_f is named with its line")
+    e = bad_data(work, "nan_force.csv", "d,F_f\n" + "\n".join(lines[:7] + ["1e-3,nan"] + lines[8:]) + "\n")
+    check("line 9" in e and "F_f = nan" in e, "a non-finite F_f is named with its line")
+    e = bad_data(work, "missing.csv", "d,F\n" + good)
+    check("no column 'F_f'" in e, "a missing column is named")
+    e = bad_data(work, "one_size.csv", "d,F_f\n" + rows([1e-3], 30))
+    check("one size class" in e, "a single size class cannot give a size effect")
+    e = bad_data(work, "few.csv", "d,F_f\n" + rows([1e-3, 2e-3], 7))
+    check("14 grains: too few" in e and "at least %d" % calibrate.MIN_GRAINS in e, "too few grains in all")
+    e = bad_data(work, "thin_class.csv", "d,F_f\n" + rows([1e-3, 2e-3], 10) + rows([3e-3], 3))
+    check("size class 0.003" in e and "3 grains" in e, "a class of too few grains is named")
+
+
+def case_yield_and_slope(liggghts, work):
+    """The bilinear yield of post/calibrate.py oedometer on a curve with a known kink."""
+    import numpy as np
+    s = np.geomspace(1e5, 1e8, 60)
+    e = np.where(s < 1e7, 0.7 - 0.01 * np.log10(s / 1e5), 0.68 - 0.3 * np.log10(s / 1e7))
+    y, c = calibrate.yield_and_slope(s, e, (3e5, 3e6), (5e7, 1e8))
+    check(abs(y / 1e7 - 1) < 1e-9 and abs(c + 0.3) < 1e-9, "yield 1e7 Pa and slope -0.3: %g, %g" % (y, c))
+
+
+def dem_check(liggghts, work, per_size, distribution=None):
+    env = dict(os.environ, PER_SIZE=str(per_size), LIGGGHTS=liggghts)
+    if distribution:
+        env["DISTRIBUTION"] = distribution
+    out = os.path.join(work, "check_" + (distribution or "fitted"))
+    p = subprocess.run(["bash", os.path.join(REPO, "scripts", "calibration_check.sh"), SYNTHETIC, out,
+                        "--bootstrap", "100"], env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                       universal_newlines=True)
+    print(p.stdout[-2000:])
+    check(p.returncode == 0, "scripts/calibration_check.sh ran (exit %d)" % p.returncode)
+    result = json.load(open(os.path.join(out, "dem", "dem_check.json")))
+    fit = json.load(open(os.path.join(out, "fit", "parameters.json")))
+    check(result["broken"] == result["grains"] == 3 * per_size, "all %d grains broke" % result["grains"])
+    return result, fit, out
+
+
+def case_dem_constant(liggghts, work):
+    """Every grain at the fitted sigma_lim0 (distribution constant): each breaks at eq. 5's F_lim for
+    its size, through the size effect (d/d0)^(-3/m), to 1%."""
+    result, fit, _ = dem_check(liggghts, work, 3, "constant")
+    for c in result["classes"]:
+        F = calibrate.force_from_strength(fit["sigma_lim0"] * calibrate.size_factor(c["d"], fit["d0"], fit["weibull_m"]),
+                                          c["d"], fit["E_eff"])
+        check(abs(c["dem_median_N"] / F - 1) < 0.01, "d = %g m: DEM F_f %.4g N = F_lim %.4g N" % (c["d"], c["dem_median_N"], F))
+
+
+def case_dem_population(liggghts, work):
+    """The fitted line over 10 grains a size: the DEM's strengths, all sizes brought to d0, are not
+    told apart from the tests' (KS p > 0.05), and at each size the median strength (F_f^(1/3))
+    agrees within 25% (10 grains: a per-size KS test has little power)."""
+    result, _, out = dem_check(liggghts, work, 10)
+    check(result["pooled_ks_p"] > 0.05, "all sizes at d0: KS p = %.3f" % result["pooled_ks_p"])
+    for c in result["classes"]:
+        ratio = (c["dem_median_N"] / c["lab_median_N"]) ** (1.0 / 3.0)
+        check(0.75 < ratio < 1.25, "d = %g m: median strength ratio DEM/tests %.2f (KS p %.3f)"
+              % (c["d"], ratio, c["ks_p"]))
+    check(os.path.getsize(os.path.join(out, "dem", "dem_check.png")) > 1000, "wrote dem_check.png")
+
+
+if __name__ == "__main__":
+    main(globals(), sys.argv[1:])
