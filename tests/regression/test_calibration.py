@@ -133,6 +133,51 @@ def case_yield_and_slope(liggghts, work):
     check(abs(y / 1e7 - 1) < 1e-9 and abs(c + 0.3) < 1e-9, "yield 1e7 Pa and slope -0.3: %g, %g" % (y, c))
 
 
+# A stand-in for an O-N run: writes the history a run would (sigma_z, void_ratio) for a bilinear
+# curve whose yield stress is 2.6e-3 sigma_lim0 and whose slope is -0.3 - 0.01 cv.
+FAKE_RUN = """import sys
+import numpy as np
+sigma_lim0, cv, N = float(sys.argv[1]), float(open("in.grains").read().split(" cv ")[1].split()[0]), sys.argv[2]
+y = 2.6e-3 * sigma_lim0
+s = np.geomspace(1e5, 1e8, 80)
+e = np.where(s < y, 0.7 - 0.01 * np.log10(s / 1e5), 0.7 - 0.01 * np.log10(y / 1e5) + (-0.3 - 0.01 * cv) * np.log10(s / y))
+with open("history_O%s.csv" % N, "w") as f:
+    f.write("step,sigma_z,void_ratio\\n")
+    for k, (a, b) in enumerate(zip(s, e)):
+        f.write("%d,%.17g,%.17g\\n" % (k, a, b))
+"""
+
+
+def case_oedometer_search(liggghts, work):
+    """post/calibrate.py oedometer over a 3 x 2 grid, each run a stand-in that writes a curve of known
+    yield (2.6e-3 sigma_lim0) and slope (-0.3 - 0.01 cv), against a lab curve of the pair (5e9, 1):
+    every run's yield and slope are read back, the best pair is the lab's, and the cost is reported."""
+    import numpy as np
+    fake = os.path.join(work, "fake_run.py")
+    open(fake, "w").write(FAKE_RUN)
+    s = np.geomspace(1e5, 1e8, 80)
+    y = 2.6e-3 * 5e9
+    e = np.where(s < y, 0.7 - 0.01 * np.log10(s / 1e5), 0.7 - 0.01 * np.log10(y / 1e5) - 0.31 * np.log10(s / y))
+    lab = os.path.join(work, "lab.csv")
+    with open(lab, "w") as f:
+        f.write("sigma_v,e\n" + "".join("%.17g,%.17g\n" % (a, b) for a, b in zip(s, e)))
+    out = os.path.join(work, "search")
+    rc, stdout, stderr = calibrate_cli("oedometer", lab, "--sigma_lim0", "2.5e9,5e9,1e10", "--cv", "0.5,1",
+                                       "--command", "%s %s {sigma_lim0} {N}" % (PYTHON, fake), "--out", out)
+    print(stdout)
+    check(rc == 0, "the search ran (exit %d) %s" % (rc, stderr[-500:]))
+    result = json.load(open(os.path.join(out, "oedometer.json")))
+    runs = result["runs"]
+    check(len(runs) == 6, "6 runs: 3 sigma_lim0 x 2 cv")
+    check(all(abs(r["yield"] / (2.6e-3 * r["sigma_lim0"]) - 1) < 0.02 and abs(r["slope"] + 0.3 + 0.01 * r["cv"]) < 1e-6
+              for r in runs), "each run's yield (2.6e-3 sigma_lim0, 2%) and slope read back from its history")
+    check(abs(result["lab_yield"] / y - 1) < 0.02, "the lab's yield %.4g Pa (%.4g)" % (result["lab_yield"], y))
+    best = result["best"]
+    check(best["sigma_lim0"] == 5e9 and best["cv"] == 1.0, "the best pair is the lab's: %g, %g" % (best["sigma_lim0"], best["cv"]))
+    check("search: 6 runs" in stdout and " s a run" in stdout, "the cost of the search is printed")
+    check(os.path.exists(os.path.join(out, "oedometer.png")), "the figure is written")
+
+
 def dem_check(liggghts, work, per_size, distribution=None):
     env = dict(os.environ, PER_SIZE=str(per_size), LIGGGHTS=liggghts)
     if distribution:
