@@ -27,6 +27,7 @@ say() { printf '[setup] %s\n' "$*"; }
 
 packages=(g++ make cmake ccache patch libopenmpi-dev openmpi-bin libeigen3-dev libgtest-dev
           xz-utils dpkg-dev python3 python3-numpy python3-matplotlib gcovr
+          python3-scipy  # post/calibrate.py: fits and goodness-of-fit statistics
           time   # GNU time: peak memory in bench/memory.sh and bench/accuracy_vs_cost.sh
           procps # pkill/pgrep: the checkpoint tests kill a whole MPI run
           libvtk9-dev python3-vtk9)  # VTK dumps for ParaView (dump custom/vtk, patch 0005); the test reads them
