@@ -1,0 +1,92 @@
+#!/usr/bin/env python3
+"""post/ring_stress.py on analytic stress states (the stress maps of penetration and pile scenes).
+
+  python3 test_ring_stress.py LIGGGHTS WORKDIR CASE    (--list: the cases)
+
+A quarter cylinder (sector 90 degrees, radius R, height H) is filled with a fine grid of points,
+each carrying the stress/atom of its cell (pressure x volume, LIGGGHTS' sign) for a known state;
+the ring averages must give that state in the cylindrical frame, everywhere the grid fills the ring.
+"""
+import csv
+import math
+import os
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(HERE)), "post"))
+from liggghts_run import check, main  # noqa: E402
+import ring_stress  # noqa: E402
+
+R, H, CELLS, LAYERS = 1.0, 0.2, 90, 6
+DR, DZ = 0.1, 0.1
+
+
+def quarter_grid(tensor):
+    """(x, y, z, s) at the cell centres of the quarter cylinder, s = -cell volume x tensor(theta)."""
+    h = R / CELLS
+    volume = h * h * (H / LAYERS)
+    points = []
+    for a in range(CELLS):
+        for b in range(CELLS):
+            x, y = (a + 0.5) * h, (b + 0.5) * h
+            if math.hypot(x, y) >= R:
+                continue
+            s = tuple(-volume * v for v in tensor(math.atan2(y, x)))
+            for k in range(LAYERS):
+                points.append((x, y, (k + 0.5) * H / LAYERS, s))
+    return points
+
+
+def inner_rings(rings):
+    """The rings that the grid fills (not the outermost, cut by the cylinder)."""
+    return {key: v for key, v in rings.items() if (key[0] + 1) * DR <= R - DR}
+
+
+def case_hydrostatic(liggghts, work):
+    """p in every direction: every ring gives sigma_rr = sigma_tt = sigma_zz = p (to the grid's 2%),
+    no shear, with the sector's volume (90 degrees)."""
+    p = 1e5
+    rings = inner_rings(ring_stress.ring_stresses(quarter_grid(lambda t: (p, p, p, 0, 0, 0)), DR, DZ, sector=90))
+    worst = max(abs(v[m] / p - 1) for v in rings.values() for m in (1, 2, 3))
+    check(len(rings) == 9 * 2 and worst < 0.02, "%d rings give p to %.2g%% in rr, tt and zz" % (len(rings), 100 * worst))
+    check(max(abs(v[4]) for v in rings.values()) < 1e-9 * p, "no r-z shear")
+
+
+def case_radial(liggghts, work):
+    """A radial stress q e_r e_r given in Cartesian components: sigma_rr = q (2%), sigma_tt and
+    sigma_zz zero to round-off (a wrong sign of the xy term gives q cos^2(2 theta) instead)."""
+    q = 3e6
+    tensor = lambda t: (q * math.cos(t) ** 2, q * math.sin(t) ** 2, 0, q * math.cos(t) * math.sin(t), 0, 0)  # noqa: E731
+    rings = inner_rings(ring_stress.ring_stresses(quarter_grid(tensor), DR, DZ, sector=90))
+    check(max(abs(v[1] / q - 1) for v in rings.values()) < 0.02, "sigma_rr = q in every ring")
+    check(max(max(abs(v[2]), abs(v[3])) for v in rings.values()) < 1e-9 * q, "sigma_tt = sigma_zz = 0")
+
+
+def case_uniaxial_cli(liggghts, work):
+    """sigma_xx = q alone, through the command line on a dump file: over a quarter ring sigma_rr and
+    sigma_tt average q/2 each (cos^2 and sin^2 over 0 - 90 degrees), sigma_zz 0; a missing column
+    stops with its name."""
+    q = 2e6
+    points = quarter_grid(lambda t: (q, 0, 0, 0, 0, 0))
+    dump = os.path.join(work, "stress.dump")
+    with open(dump, "w") as f:
+        f.write("ITEM: TIMESTEP\n100\nITEM: NUMBER OF ATOMS\n%d\nITEM: BOX BOUNDS ff ff ff\n0 1\n0 1\n0 0.2\n"
+                "ITEM: ATOMS id x y z c_s[1] c_s[2] c_s[3] c_s[4] c_s[5] c_s[6]\n" % len(points))
+        for n, (x, y, z, s) in enumerate(points):
+            f.write("%d %.17g %.17g %.17g %s\n" % (n + 1, x, y, z, " ".join("%.17g" % v for v in s)))
+    out = os.path.join(work, "rings.csv")
+    ring_stress.main([dump, "--dr", str(DR), "--dz", str(DZ), "--sector", "90", "--column", "c_s", "--out", out])
+    rows = [r for r in csv.DictReader(open(out)) if float(r["r_mid"]) + DR / 2 <= R - DR + 1e-12]
+    check(len(rows) == 18 and all(abs(float(r[c]) / (q / 2) - 1) < 0.03 for r in rows for c in ("sigma_rr", "sigma_tt"))
+          and all(abs(float(r["sigma_zz"])) < 1e-9 * q for r in rows),
+          "%d rings read back: sigma_rr = sigma_tt = q/2 (3%%), sigma_zz = 0" % len(rows))
+    try:
+        ring_stress.main([dump, "--dr", "0.1", "--dz", "0.1", "--out", out])
+        check(False, "a dump without c_stress columns is refused")
+    except SystemExit as e:
+        check("no column c_stress[1]" in str(e), "a dump without c_stress columns is refused naming the column")
+
+
+if __name__ == "__main__":
+    main(globals(), sys.argv[1:])
