@@ -7,11 +7,14 @@ surfaces are open (no base, no top: grains touch only the outside) and their fac
 outwards, as LIGGGHTS' contact detection expects. --sector 90 (or 180) writes only the part between
 the angles 0 and 90 (180) degrees around the axis: the penetrometer of a quarter (half) chamber whose
 symmetry planes pass through the axis; its forces are that fraction of the whole one's.
+--tip-shape flat writes a flat base instead of the cone (cone.stl keeps the name: the tip's force):
+the closed-ended pile of calibration-chamber tests, whose base resistance is that force over
+pi D^2 / 4.
 
   python3 penetrometer.py --diameter 0.002 --shaft 0.02 [--sleeve 0.0075] [--x 0 --y 0 --tip 0]
-                          [--segments 48] [--sector 360] [--out .]
+                          [--segments 48] [--sector 360] [--tip-shape cone|flat] [--out .]
 
-Cone height: (D_c / 2) / tan(30 deg) = 0.866 D_c. Units: metres."""
+Cone height: (D_c / 2) / tan(30 deg) = 0.866 D_c (a flat base: 0). Units: metres."""
 import argparse
 import math
 import os
@@ -41,6 +44,18 @@ def cone_facets(cx, cy, tip, diameter, segments, sides):
     base = ring(cx, cy, tip + height, 0.5 * diameter, segments)
     apex = (cx, cy, tip)
     return [(apex, base[k + 1], base[k]) for k in range(sides)]
+
+
+def flat_facets(cx, cy, tip, diameter, segments, sides):
+    """The base disc at the tip's height, a fan from the axis wound so that the normals point down."""
+    base = ring(cx, cy, tip, 0.5 * diameter, segments)
+    centre = (cx, cy, tip)
+    return [(centre, base[k + 1], base[k]) for k in range(sides)]
+
+
+def tip_height(diameter, shape):
+    """The height of the tip's part: the 60-degree cone's, or 0 for a flat base."""
+    return 0.5 * diameter / math.tan(math.radians(APEX_ANGLE / 2)) if shape == "cone" else 0.0
 
 
 def shaft_facets(cx, cy, bottom, diameter, length, segments, sides):
@@ -75,14 +90,17 @@ def main():
     parser.add_argument("--segments", type=int, default=48, help="facets around the axis (>= 8)")
     parser.add_argument("--sector", type=float, default=360.0, choices=(90.0, 180.0, 360.0),
                         help="degrees around the axis, from the +x direction counter-clockwise")
+    parser.add_argument("--tip-shape", default="cone", choices=("cone", "flat"),
+                        help="the 60-degree cone, or a flat base (a closed-ended pile)")
     parser.add_argument("--out", default=".", help="folder for cone.stl and shaft.stl")
     a = parser.parse_args()
     if not (a.diameter > 0 and a.shaft > 0 and a.sleeve >= 0 and a.segments >= 8 and a.segments % 4 == 0):
         parser.error("--diameter and --shaft must be > 0, --sleeve >= 0, --segments >= 8 and a multiple of 4")
-    height = 0.5 * a.diameter / math.tan(math.radians(APEX_ANGLE / 2))
+    height = tip_height(a.diameter, a.tip_shape)
     sides = int(a.segments * a.sector / 360.0)
     os.makedirs(a.out, exist_ok=True)
-    write_stl(os.path.join(a.out, "cone.stl"), "cone", cone_facets(a.x, a.y, a.tip, a.diameter, a.segments, sides))
+    tip = cone_facets if a.tip_shape == "cone" else flat_facets
+    write_stl(os.path.join(a.out, "cone.stl"), "cone", tip(a.x, a.y, a.tip, a.diameter, a.segments, sides))
     names = ["cone"]
     if a.sleeve > 0:
         write_stl(os.path.join(a.out, "sleeve.stl"), "sleeve",
@@ -91,8 +109,8 @@ def main():
     write_stl(os.path.join(a.out, "shaft.stl"), "shaft",
               shaft_facets(a.x, a.y, a.tip + height + a.sleeve, a.diameter, a.shaft, a.segments, sides))
     names.append("shaft")
-    print("penetrometer: D_c %g m, cone height %g m, sleeve %g m, shaft %g m, %d of %d segments: %s" %
-          (a.diameter, height, a.sleeve, a.shaft, sides, a.segments,
+    print("penetrometer: D_c %g m, %s tip of height %g m, sleeve %g m, shaft %g m, %d of %d segments: %s" %
+          (a.diameter, a.tip_shape, height, a.sleeve, a.shaft, sides, a.segments,
            os.path.join(a.out, "{%s}.stl" % ",".join(names))))
 
 

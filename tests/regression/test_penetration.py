@@ -30,9 +30,9 @@ CHAMBER = {"N": 80, "width": 6, "depth": 3, "below": 2}
 DC = 0.0357
 
 
-def write_meshes(folder, diameter, shaft, tip, segments):
+def write_meshes(folder, diameter, shaft, tip, segments, *options):
     subprocess.run(["/usr/bin/python3", SCRIPT, "--diameter", str(diameter), "--shaft", str(shaft), "--tip", str(tip),
-                    "--segments", str(segments), "--out", folder], check=True, stdout=subprocess.DEVNULL)
+                    "--segments", str(segments), "--out", folder] + list(options), check=True, stdout=subprocess.DEVNULL)
 
 
 def read_stl(path):
@@ -87,6 +87,56 @@ def case_penetrometer_geometry(liggghts, work):
     base = {tuple(round(x, 12) for x in p) for _, f in cone for p in f if abs(p[2] - (tip + height)) < 1e-12}
     bottom = {tuple(round(x, 12) for x in p) for _, f in shaft for p in f if abs(p[2] - (tip + height)) < 1e-12}
     check(base == bottom and len(base) == n, "the shaft starts on the cone's base ring (%d points)" % len(base))
+
+
+def case_pile_geometry(liggghts, work):
+    """The closed-ended pile (--tip-shape flat), a quarter of it: its base is the disc sector at the
+    tip's height, area pi r^2 / 4 within the polygon's error, every normal straight down; the shaft
+    starts on the base's ring at the tip's height."""
+    del liggghts
+    D, L, tip, n = 0.002, 0.01, 0.001, 96
+    write_meshes(work, D, L, tip, n, "--sector", "90", "--tip-shape", "flat")
+    base, shaft = read_stl(os.path.join(work, "cone.stl")), read_stl(os.path.join(work, "shaft.stl"))
+    r = D / 2
+    check(len(base) == n // 4 and len(shaft) == 2 * n // 4, "%d base and %d shaft facets" % (len(base), len(shaft)))
+    check(all(abs(p[2] - tip) < 1e-15 for _, f in base for p in f), "the base lies at the tip's height")
+    base_area = sum(area(*f) for _, f in base)
+    polygon = 0.25 * n * 0.5 * r * r * math.sin(2 * math.pi / n)
+    check(abs(base_area / polygon - 1) < 1e-9 and abs(base_area / (math.pi * r * r / 4) - 1) < 1e-3,
+          "base area %.6g m^2: the polygon's, and pi r^2 / 4 = %.6g within 0.1%%" % (base_area, math.pi * r * r / 4))
+    check(all(abs(n_[0]) < 1e-9 and abs(n_[1]) < 1e-9 and abs(n_[2] + 1) < 1e-9 for n_, _ in base),
+          "every base normal points straight down")
+    ring_base = {tuple(round(x, 12) for x in p) for _, f in base for p in f if math.hypot(p[0], p[1]) > 0.5 * r}
+    bottom = {tuple(round(x, 12) for x in p) for _, f in shaft for p in f if abs(p[2] - tip) < 1e-12}
+    check(ring_base == bottom and len(bottom) == n // 4 + 1, "the shaft starts on the base's ring (%d points)" % len(bottom))
+
+
+@variants(*each_rank_count(1, 2))
+def case_pile_short(liggghts, work, ranks):
+    """The closed-ended pile (in.cone -var tip_shape flat) jacked 2 D_c into the small chamber with
+    crushing in the zone, on 1 and 2 ranks: the books at every row and unique tags at the end; the
+    base resistance (the q_c column) positive, and more than half its 1 - 2 D_c value already over
+    the first 0.5 D_c (a cone's builds up over its height)."""
+    ranks = int(ranks)
+    folder = prepare_chamber(liggghts, work, ranks)
+    push(liggghts, folder, ranks, crushing="region", vtk=0, label="pile", depth=2, tip_shape="flat")
+    history = read_rows(os.path.join(folder, "penetration_pile_N80.csv"))
+    n0 = grains0(folder)
+    check(all(r["particles"] == n0 + 13 * r["events"] for r in history),
+          "particles = %d + 13 x events at every one of %d rows (%d events)" % (n0, len(history), history[-1]["events"]))
+    events = read_rows(os.path.join(folder, "events_pen_pile_N80.csv"))
+    _, _, atoms = read_dump(os.path.join(folder, "particles_pile_N80.liggghts"))[0]
+    tags = [int(a["id"]) for a in atoms]
+    check(len(set(tags)) == len(tags) == n0 + 13 * len(events),
+          "%d particles at the end = %d + 13 x %d logged events, every tag unique" % (len(tags), n0, len(events)))
+    mean = lambda v: sum(v) / len(v)  # noqa: E731
+    shallow = [r["q_c"] for r in history if r["depth_Dc"] < 0.5]
+    deep = [r["q_c"] for r in history if r["depth_Dc"] > 1.0]
+    # a flat base bears on the grains at its first contact, where a cone's resistance builds up over
+    # its height (case cone_short: q_c over 2 - 3 D_c more than twice that over 0 - 0.5 D_c)
+    check(min(deep) > 0 and mean(shallow) > 0.5 * mean(deep),
+          "q_b > 0, and from the first contact: %.3g MPa over 0 - 0.5 D_c, %.3g over 1 - 2 D_c"
+          % (mean(shallow) / 1e6, mean(deep) / 1e6))
 
 
 @variants(*each_rank_count(1, 2))
