@@ -89,6 +89,22 @@ def case_penetrometer_geometry(liggghts, work):
     check(base == bottom and len(base) == n, "the shaft starts on the cone's base ring (%d points)" % len(base))
 
 
+def check_test_books(folder, label):
+    """The books of a finished test: particles = grains + 13 x events at every history row, and the
+    final dump (up to output_every steps after the last row) holds grains + 13 x the logged events,
+    every tag once. Returns the history, the grains and the logged events."""
+    history = read_rows(os.path.join(folder, "penetration_%s_N80.csv" % label))
+    n0 = grains0(folder)
+    check(all(r["particles"] == n0 + 13 * r["events"] for r in history),
+          "particles = %d + 13 x events at every one of %d rows (%d events at the end)" % (n0, len(history), history[-1]["events"]))
+    events = read_rows(os.path.join(folder, "events_pen_%s_N80.csv" % label))
+    _, _, atoms = read_dump(os.path.join(folder, "particles_%s_N80.liggghts" % label))[0]
+    tags = [int(a["id"]) for a in atoms]
+    check(len(set(tags)) == len(tags) == n0 + 13 * len(events),
+          "%d particles at the end = %d + 13 x %d logged events, every tag unique" % (len(tags), n0, len(events)))
+    return history, n0, events
+
+
 def case_pile_geometry(liggghts, work):
     """The closed-ended pile (--tip-shape flat), a quarter of it: its base is the disc sector at the
     tip's height, area pi r^2 / 4 within the polygon's error, every normal straight down; the shaft
@@ -120,15 +136,7 @@ def case_pile_short(liggghts, work, ranks):
     ranks = int(ranks)
     folder = prepare_chamber(liggghts, work, ranks)
     push(liggghts, folder, ranks, crushing="region", vtk=0, label="pile", depth=2, tip_shape="flat")
-    history = read_rows(os.path.join(folder, "penetration_pile_N80.csv"))
-    n0 = grains0(folder)
-    check(all(r["particles"] == n0 + 13 * r["events"] for r in history),
-          "particles = %d + 13 x events at every one of %d rows (%d events)" % (n0, len(history), history[-1]["events"]))
-    events = read_rows(os.path.join(folder, "events_pen_pile_N80.csv"))
-    _, _, atoms = read_dump(os.path.join(folder, "particles_pile_N80.liggghts"))[0]
-    tags = [int(a["id"]) for a in atoms]
-    check(len(set(tags)) == len(tags) == n0 + 13 * len(events),
-          "%d particles at the end = %d + 13 x %d logged events, every tag unique" % (len(tags), n0, len(events)))
+    history, _, _ = check_test_books(folder, "pile")
     mean = lambda v: sum(v) / len(v)  # noqa: E731
     shallow = [r["q_c"] for r in history if r["depth_Dc"] < 0.5]
     deep = [r["q_c"] for r in history if r["depth_Dc"] > 1.0]
@@ -245,16 +253,7 @@ def case_cone_short(liggghts, work, ranks):
     ranks = int(ranks)
     folder = prepare_chamber(liggghts, work, ranks)
     out = push(liggghts, folder, ranks, crushing="region", vtk_every=1)
-    history = read_rows(os.path.join(folder, "penetration_dense_region_N80.csv"))
-    n0 = grains0(folder)
-    check(all(r["particles"] == n0 + 13 * r["events"] for r in history),
-          "particles = %d + 13 x events at every one of %d rows (%d events at the end)" % (n0, len(history), history[-1]["events"]))
-    # the final dump follows the last row by up to output_every steps: its books are the event log's
-    events = read_rows(os.path.join(folder, "events_pen_dense_region_N80.csv"))
-    _, _, atoms = read_dump(os.path.join(folder, "particles_dense_region_N80.liggghts"))[0]
-    tags = [int(a["id"]) for a in atoms]
-    check(len(set(tags)) == len(tags) == n0 + 13 * len(events),
-          "%d particles at the end = %d + 13 x %d logged events, every tag unique" % (len(tags), n0, len(events)))
+    history, n0, events = check_test_books(folder, "dense_region")
     shallow = [r["q_c"] for r in history if r["depth_Dc"] < 0.5]
     deep = [r["q_c"] for r in history if r["depth_Dc"] > 2.0]
     mean = lambda v: sum(v) / len(v)  # noqa: E731
@@ -277,7 +276,7 @@ def case_cone_short(liggghts, work, ranks):
             reader.SetFileName(os.path.join(folder, "vtk_dense_region_N80_end.vtu"))
             reader.Update()
             points = reader.GetOutput().GetNumberOfPoints()
-            check(points == len(tags), "the final .vtu holds the %d particles" % points)
+            check(points == n0 + 13 * len(events), "the final .vtu holds the %d particles" % points)
             meshes = sorted(f for f in os.listdir(folder) if f.startswith("mesh_dense_region_N80_") and f.endswith(".vtk"))
             mesh = vtk.vtkDataSetReader()
             mesh.SetFileName(os.path.join(folder, meshes[-1]))
