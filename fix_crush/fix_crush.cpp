@@ -560,19 +560,20 @@ void FixCrush::check_time_step(double smallest_radius) const
   if (!(smallest_radius < 1e300)) return;
   // fix dt/stiffness follows the contacts' own stiffness, which the Rayleigh bound overestimates.
   if (modify->find_fix_style("dt/stiffness", 0)) return;
-  // The stiffest, lightest material present sets the Rayleigh time.
-  double dt_limit = 1e300, density_min = 1e300;
-  for (int i = 0; i < atom->nlocal; i++) density_min = std::min(density_min, atom->density[i]);
-  double density_all = 0.0;
-  MPI_Allreduce(&density_min, &density_all, 1, MPI_DOUBLE, MPI_MIN, world);
-  if (!(density_all < 1e300)) return;
-  // Scaled fragments keep their grain's r sqrt(rho), on which alone the Rayleigh time depends: the
-  // particles present bound every fragment to come (radius r sqrt(rho), density 1).
+  // The stiffest, lightest material present sets the Rayleigh time. Scaled fragments keep their
+  // grain's r sqrt(rho), on which alone it depends: the particles present bound every fragment to
+  // come (radius r sqrt(rho), density 1).
   const bool scaled = settings_.fragment_density == crush::FragmentDensity::scaled;
+  double density_all = 1.0;
   if (scaled) {
     smallest_radius = smallest_rayleigh_product();
-    density_all = 1.0;
+  } else {
+    double density_min = 1e300;
+    for (int i = 0; i < atom->nlocal; i++) density_min = std::min(density_min, atom->density[i]);
+    MPI_Allreduce(&density_min, &density_all, 1, MPI_DOUBLE, MPI_MIN, world);
   }
+  if (!(smallest_radius < 1e300 && density_all < 1e300)) return;
+  double dt_limit = 1e300;
   // Only the types of particles present count (wall types are not particles).
   std::vector<int> present(atom->ntypes + 1, 0), present_all(atom->ntypes + 1, 0);
   for (int i = 0; i < atom->nlocal; i++) present[atom->type[i]] = 1;

@@ -16,8 +16,6 @@
 
 #include "atom.h"
 #include "crush_constants.h"
-#include "crush_fragments.h"
-#include "error.h"
 #include "fix_property_atom.h"
 #include "modify.h"
 

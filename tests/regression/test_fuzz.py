@@ -166,7 +166,9 @@ STRENGTHS = [("strength_zero", deck(crush("sigma_lim0", "0"))),
              ("scale_edge", deck(crush("scale", "1e4"))),
              ("dmin_edge", deck(crush("dmin", "10"))),
              ("dmin_zero", deck(crush("dmin", "0"))),
-             ("fines_edge", deck(crush("fines_dimension", "2.999")))]
+             ("fines_edge", deck(crush("fines_dimension", "2.999"))),
+             ("fragment_density_scaled", deck(crush("fragment_density", "scaled"))),
+             ("fragment_density_word", deck(crush("fragment_density", "yes")))]
 GEOMETRY = [("coincident", deck(atoms=LATTICE + "\ncreate_atoms    1 single 0.00125 0.00125 0.00125 units box")),
             ("overlap_deep", deck(atoms=LATTICE + "\ncreate_atoms    1 single 0.00126 0.00125 0.00125 units box")),
             ("outside_box", deck(("set             group all diameter", "set             atom 8 x 0.01\nset             group all diameter"))),
@@ -288,7 +290,7 @@ def run_all(liggghts, work, ranks, names):
 MUST_RUN = {"strength_low_edge", "strength_high_edge", "weibull_low_edge", "d0_edge", "cv_edge", "scale_edge",
             "dmin_edge", "dmin_zero", "fines_edge", "damp_edge", "servo_stress_edge", "servo_rate_edge",
             "dt_fraction_edge", "dt_growth_edge", "data_good", "restart_good", "density_huge", "multi_auto",
-            "multi_bounds", "multi_bound_tiny"}
+            "multi_bounds", "multi_bound_tiny", "fragment_density_scaled"}
 MUST_STOP = {"diameter_zero", "diameter_negative", "diameter_nan", "diameter_inf", "density_zero",
              "density_negative", "density_nan", "density_zero_outside_group", "youngs_zero", "youngs_negative", "youngs_nan", "strength_zero",
              "strength_negative", "strength_nan", "strength_inf", "strength_tiny", "weibull_tiny", "d0_tiny",
@@ -297,7 +299,7 @@ MUST_STOP = {"diameter_zero", "diameter_negative", "diameter_nan", "diameter_inf
              "servo_walls_crossed", "servo_velocity_huge", "dt_fraction_zero", "data_truncated",
              "data_not_a_number", "data_zero_diameter", "data_missing_columns", "data_empty", "restart_text",
              "restart_empty", "restart_zeros", "restart_random", "size_classes_decreasing", "size_classes_zero",
-             "size_classes_nan", "size_classes_too_few", "size_classes_word"} | \
+             "size_classes_nan", "size_classes_too_few", "size_classes_word", "fragment_density_word"} | \
     {"restart_cut_%d" % p for p in (1, 5, 20, 50, 80, 95, 99)}
 
 
