@@ -49,7 +49,8 @@ CrushSettings parse_crush_settings(const std::vector<std::string> &args)
    .text("region", "a region ID", c.region_id)
    .yes_no("check_tags", c.check_tags)
    .choice("force", {"elastic", "total"}, force)
-   .choice("fragment_density", {"true", "scaled"}, fragment_density);  // the order of FragmentDensity
+   .choice("fragment_density", {"true", "scaled"}, fragment_density)  // the order of FragmentDensity
+   .yes_no("redraw", c.redraw);
   t.parse(args);
   c.total_force = force == 1;
   c.fragment_density = static_cast<FragmentDensity>(fragment_density);

@@ -86,7 +86,7 @@ FixCrush::FixCrush(LAMMPS *lmp, int narg, char **arg) :
   smallest_fragment_diameter_(0.0), initial_largest_diameter_(0.0), next_tag_(1), replace_seconds_(0.0),
   particle_count_(0), initialized_(false), refresh_needed_(true), recording_(true), box_reference_{0.0, 0.0, 0.0},
   allowed_displacement_(0.0), force_check_(true), check_now_(true), checked_steps_(0), restart_step_(-1),
-  log_opened_(false)
+  log_opened_(false), redraw_pending_(settings_.redraw)
 {
   if (!atom->radius_flag || !atom->rmass_flag || !atom->density_flag)
     error->all(FLERR, "fix crush needs 'atom_style granular' (radius, mass and density per atom)");
@@ -358,6 +358,15 @@ void FixCrush::draw_missing_strengths()
     }
 }
 
+// 'redraw yes', once, at the first setup: the strengths read from a restart file (a chamber consolidated
+// with crushing, the uncrushable reference to follow) are drawn anew from this fix's distribution.
+void FixCrush::discard_strengths()
+{
+  double **data = fix_data_->array_atom;
+  for (int i = 0; i < atom->nlocal; i++) data[i][STRENGTH] = -1.0;
+  redraw_pending_ = false;
+}
+
 // A plain-model error about one particle: the run stops naming it (this processor alone may see it).
 void FixCrush::particle_error(tagint tag, double radius, double density, const char *doing,
                               const crush::ModelError &e) const
@@ -370,6 +379,7 @@ void FixCrush::particle_error(tagint tag, double radius, double density, const c
 
 void FixCrush::setup_pre_force(int vflag)
 {
+  if (redraw_pending_) discard_strengths();
   bigint n = atom->nlocal;
   MPI_Allreduce(&n, &particle_count_, 1, MPI_LMP_BIGINT, MPI_SUM, world);
   if (initial_largest_diameter_ == 0.0) {

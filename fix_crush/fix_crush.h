@@ -87,6 +87,7 @@ class FixCrush : public Fix {
   double largest_displacement() const;
   void schedule_next_check();
   void draw_missing_strengths();
+  void discard_strengths();
   void update_strength_terms();
   void check_time_step(double smallest_radius) const;
   double smallest_possible_radius() const;
@@ -180,6 +181,7 @@ class FixCrush : public Fix {
   bool recording_;                   // the recorder is attached (with 'every' > 1: on check steps only)
   bigint restart_step_;              // the step of the restart file this run continues (-1: none)
   bool log_opened_;                  // open_log() ran (at the first init)
+  bool redraw_pending_;              // 'redraw yes': the first setup discards the restart's strengths
 };
 
 }  // namespace LAMMPS_NS

@@ -5,7 +5,10 @@ tests of one chamber.
     post/penetration.py --N 60 --Dc 0.0357 [--dir .] [--out dense_N60] LABEL ...
 
 Reads, for each LABEL (in.cone's label, e.g. dense_1 and dense_0), penetration_LABEL_N<N>.csv,
-events_pen_LABEL_N<N>.csv and particles_LABEL_N<N>.liggghts in --dir, and writes there:
+events_pen_LABEL_N<N>.csv and particles_LABEL_N<N>.liggghts in --dir, and the events of the
+chamber's consolidation with crushing (in.chamber: --chamber, by default
+events_chamber_<density>_N<N>.csv with the label's first word as the density, where it exists:
+the volume those events removed is in the gradings too), and writes there:
   penetration_OUT.png    q_c (MPa) and the sleeve friction f_s (kPa) against the tip's depth (D_c)
   events_OUT.png         where the grains broke, in (r, z - z_tip) / D_c around the tip at each event:
                          grains loaded to their limit F_lim, and grains without strength (a zero draw
@@ -16,7 +19,9 @@ events_pen_LABEL_N<N>.csv and particles_LABEL_N<N>.liggghts in --dir, and writes
                          of the axis), the removed volume counted as fractal fines as compute crush/gsd
                          counts it
   penetration_OUT_summary.csv   per test: q_c and f_s averaged over the plateau (depths from
-                         --plateau D_c to the end), their spread, events, particles, I_G near and far
+                         --plateau D_c to the end), their spread, events, particles, I_G near and far,
+                         and (I_G_near0, I_G_far0) those zones' I_G in the consolidated chamber before
+                         the test (chamber_<density>_N<N>.liggghts, in.chamber's dump)
 and prints the summary.
 """
 import argparse
@@ -88,8 +93,10 @@ def grading(particles, removed, fines_top, N):
     return [100 * passing(s) for s in SIEVES], area / limiting
 
 
-def zone_gradings(atoms, events, kept, history, Dc, N, zone, far):
-    tip = history[-1]["tip_z"]
+def zone_gradings(atoms, events, kept, tip, Dc, N, zone, far, fines_top):
+    """The gradings within zone D_c of the tip's final place and beyond far D_c of the axis; events
+    are every event of the sand's history up to the state of atoms, each removing 1 - kept of its
+    mother as fines below fines_top."""
     near_p, far_p, near_removed, far_removed = [], [], 0.0, 0.0
     for x, y, z, r, _ in atoms.values():
         d, v = 2 * r, math.pi / 6 * (2 * r) ** 3
@@ -103,9 +110,13 @@ def zone_gradings(atoms, events, kept, history, Dc, N, zone, far):
             near_removed += removed
         elif math.sqrt(e["x"] ** 2 + e["y"] ** 2) > far * Dc:
             far_removed += removed
-    fragments = [2 * r for _, _, _, r, g in atoms.values() if g > 0]
-    fines_top = min(fragments) / N if fragments else 0.0
     return (grading(near_p, near_removed, fines_top, N), len(near_p)), (grading(far_p, far_removed, fines_top, N), len(far_p))
+
+
+def smallest_fragment(atoms, N):
+    """The fines' top size (downscaled): the smallest fragment of atoms, 0 where none broke."""
+    fragments = [2 * r for _, _, _, r, g in atoms.values() if g > 0]
+    return min(fragments) / N if fragments else 0.0
 
 
 def main():
@@ -118,6 +129,8 @@ def main():
     parser.add_argument("--plateau", type=float, default=4.0, help="start of the plateau (D_c)")
     parser.add_argument("--zone", type=float, default=1.5, help="near-tip zone radius (D_c)")
     parser.add_argument("--far", type=float, default=3.0, help="far field: beyond this distance from the axis (D_c)")
+    parser.add_argument("--chamber", help="the chamber's consolidation events (in.chamber's events_chamber_*.csv;"
+                        " default: events_chamber_<the label's first word>_N<N>.csv where it exists)")
     a = parser.parse_args()
     a.labels = [label for arg in a.labels for label in arg.split(",") if label]  # in.penetration joins them
     n_label = "%g" % a.N
@@ -131,6 +144,12 @@ def main():
         events = read_csv(events_path) if os.path.exists(events_path) else []
         dump = os.path.join(a.dir, "particles_%s_N%s.liggghts" % (label, n_label))
         atoms = read_dump(dump) if os.path.exists(dump) else {}
+        chamber = a.chamber or os.path.join(a.dir, "events_chamber_%s_N%s.csv" % (label.split("_")[0], n_label))
+        if a.chamber and not os.path.exists(chamber):
+            sys.exit("penetration.py: no %s (--chamber)" % chamber)
+        consolidation = read_csv(chamber) if os.path.exists(chamber) else []
+        before = chamber.replace("events_chamber_", "chamber_")[:-len(".csv")] + ".liggghts"
+        atoms0 = read_dump(before) if consolidation and os.path.exists(before) else {}
         tests.append((label, history, events, atoms))
         plateau = [r for r in history if r["depth_Dc"] >= a.plateau]
         qc = [r["q_c"] for r in plateau]
@@ -141,12 +160,18 @@ def main():
                "f_s_sd_kPa": sd(fs) / 1e3, "depth_Dc": history[-1]["depth_Dc"], "events": history[-1]["events"],
                "particles": history[-1]["particles"],
                "events_loaded": sum(1 for e in events if math.isfinite(e["force_ratio"])), "I_G_near": float("nan"), "I_G_far": float("nan"),
-               "grains_near": 0, "grains_far": 0}
-        kept = kept_fraction(events, atoms) if events else 1.0
+               "I_G_near0": float("nan"), "I_G_far0": float("nan"),
+               "grains_near": 0, "grains_far": 0, "chamber_events": len(consolidation)}
+        history_events = consolidation + events
+        kept = kept_fraction(history_events, atoms) if history_events else 1.0
         if atoms and kept is not None:
-            (near, n_near), (far, n_far) = zone_gradings(atoms, events, kept, history, a.Dc, a.N, a.zone, a.far)
+            tip, fines_top = history[-1]["tip_z"], smallest_fragment(atoms, a.N)
+            (near, n_near), (far, n_far) = zone_gradings(atoms, history_events, kept, tip, a.Dc, a.N, a.zone, a.far, fines_top)
             row.update({"I_G_near": near[1], "I_G_far": far[1], "grains_near": n_near, "grains_far": n_far,
                         "near": near[0], "far": far[0]})
+            if atoms0:  # the same zones in the consolidated chamber, before the test
+                (near0, _), (far0, _) = zone_gradings(atoms0, consolidation, kept, tip, a.Dc, a.N, a.zone, a.far, fines_top)
+                row.update({"I_G_near0": near0[1], "I_G_far0": far0[1], "near0": near0[0]})
         summary.append(row)
 
     fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(10, 5), sharey=True)
@@ -197,6 +222,9 @@ def main():
             line, = ax.semilogx([s * 1e3 for s in SIEVES], r["near"], label="%s near the tip (I_G %.3f)" % (r["label"], r["I_G_near"]))
             ax.semilogx([s * 1e3 for s in SIEVES], r["far"], ls="--", color=line.get_color(),
                         label="%s far field (I_G %.3f)" % (r["label"], r["I_G_far"]))
+            if "near0" in r:
+                ax.semilogx([s * 1e3 for s in SIEVES], r["near0"], ls=":", color=line.get_color(),
+                            label="%s near the tip, before the test (I_G %.3f)" % (r["label"], r["I_G_near0"]))
         ax.set_xlabel("size (mm, downscaled)")
         ax.set_ylabel("percent passing")
         ax.grid(alpha=0.3)
@@ -205,16 +233,17 @@ def main():
         fig.savefig(os.path.join(a.dir, "gsd_%s.png" % a.out), dpi=120)
 
     columns = ["label", "q_c_MPa", "q_c_sd_MPa", "f_s_kPa", "f_s_sd_kPa", "depth_Dc", "events", "events_loaded", "particles",
-               "I_G_near", "I_G_far", "grains_near", "grains_far"]
+               "I_G_near", "I_G_far", "I_G_near0", "I_G_far0", "grains_near", "grains_far", "chamber_events"]
     with open(os.path.join(a.dir, "penetration_%s_summary.csv" % a.out), "w") as f:
         f.write(",".join(columns) + "\n")
         for row in summary:
             f.write(",".join(row[c] if isinstance(row[c], str) else "%.6g" % row[c] for c in columns) + "\n")
     for row in summary:
         print("PENETRATION %s: q_c %.3f MPa (sd %.3f) and f_s %.2f kPa over %.1f - %.1f D_c, %d events (%d loaded to"
-              " F_lim), %d particles, I_G %.3f near the tip, %.3f far"
+              " F_lim), %d particles, I_G %.3f near the tip, %.3f far (before the test %.3f and %.3f)"
               % (row["label"], row["q_c_MPa"], row["q_c_sd_MPa"], row["f_s_kPa"], a.plateau, row["depth_Dc"],
-                 row["events"], row["events_loaded"], row["particles"], row["I_G_near"], row["I_G_far"]))
+                 row["events"], row["events_loaded"], row["particles"], row["I_G_near"], row["I_G_far"],
+                 row["I_G_near0"], row["I_G_far0"]))
 
 
 if __name__ == "__main__":

@@ -172,6 +172,13 @@ TEST(CrushSettings, FragmentDensityIsTrueUnlessScaled)
             std::string::npos);
 }
 
+TEST(CrushSettings, RedrawIsOffUnlessAsked)
+{
+  EXPECT_FALSE(parse_crush_settings(required).redraw);
+  EXPECT_TRUE(parse_crush_settings(with({"redraw", "yes"})).redraw);
+  EXPECT_NE(error_of(with({"redraw", "all"})).find("'redraw' expects 'yes' or 'no'"), std::string::npos);
+}
+
 TEST(KeywordNumber, AcceptsFiniteNumbersOnly)
 {
   double v = 0.0;
