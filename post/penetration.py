@@ -21,7 +21,9 @@ the volume those events removed is in the gradings too), and writes there:
   penetration_OUT_summary.csv   per test: q_c and f_s averaged over the plateau (depths from
                          --plateau D_c to the end), their spread, events, particles, I_G near and far,
                          and (I_G_near0, I_G_far0) those zones' I_G in the consolidated chamber before
-                         the test (chamber_<density>_N<N>.liggghts, in.chamber's dump)
+                         the test (chamber_<density>_N<N>.liggghts, in.chamber's dump); the
+                         velocity, the inertial number at the tip and in the chamber, and the grains'
+                         kinetic energy as a share of the penetrometer's work (over the plateau)
 and prints the summary.
 """
 import argparse
@@ -37,6 +39,8 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 FRACTAL_DIMENSION = 2.5  # fix crush's default fines_dimension
 D_MAX = 0.42e-3  # the decks' dmax for I_G (m, downscaled: examples/fontainebleau/in.load_stage)
+RHO = 2650.0  # the grains' density (kg/m^3, examples/fontainebleau/in.grading)
+D50 = 0.21e-3  # NE34's d50 (m, downscaled)
 SIEVES = [0.01e-3, 0.02e-3, 0.05e-3, 0.075e-3, 0.1e-3, 0.15e-3, 0.2e-3, 0.25e-3, 0.3e-3, 0.35e-3, 0.45e-3]
 
 
@@ -119,6 +123,26 @@ def smallest_fragment(atoms, N):
     return min(fragments) / N if fragments else 0.0
 
 
+def rate_measures(history, plateau, Dc, N):
+    """The push's velocity, the inertial number I = (v / D_c) d50 sqrt(rho / p) at the tip (p = q_c)
+    and in the chamber (p = the walls' mean stress), both over the plateau, and the grains' kinetic
+    energy as a share of the penetrometer's work so far (the quarter's forces times the tip's
+    travel, interval by interval), averaged over the plateau."""
+    first, last = history[0], history[-1]
+    v = (first["tip_z"] - last["tip_z"]) / (last["time"] - first["time"]) if last["time"] > first["time"] else float("nan")
+    work, shares = 0.0, []
+    for a, b in zip(history, history[1:]):
+        work += (b["F_cone"] + b["F_sleeve"] + b["F_shaft"]) * (a["tip_z"] - b["tip_z"])
+        if b in plateau and work > 0 and "ke" in b:
+            shares.append(b["ke"] / work)
+    mean = lambda values: sum(values) / len(values) if values else float("nan")  # noqa: E731
+    rate = v / Dc * D50 * N * math.sqrt(RHO)
+    q_c = mean([r["q_c"] for r in plateau])
+    p = mean([(r["sigma_x"] + r["sigma_y"] + r["sigma_z"]) / 3 for r in plateau])
+    return {"v": v, "I_tip": rate / math.sqrt(q_c) if q_c > 0 else float("nan"),
+            "I_chamber": rate / math.sqrt(p) if p > 0 else float("nan"), "ke_share": mean(shares)}
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("labels", nargs="+", help="the tests' labels (or one comma-separated list)")
@@ -172,6 +196,7 @@ def main():
             if atoms0:  # the same zones in the consolidated chamber, before the test
                 (near0, _), (far0, _) = zone_gradings(atoms0, consolidation, kept, tip, a.Dc, a.N, a.zone, a.far, fines_top)
                 row.update({"I_G_near0": near0[1], "I_G_far0": far0[1], "near0": near0[0]})
+        row.update(rate_measures(history, plateau, a.Dc, a.N))
         summary.append(row)
 
     fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(10, 5), sharey=True)
@@ -233,17 +258,19 @@ def main():
         fig.savefig(os.path.join(a.dir, "gsd_%s.png" % a.out), dpi=120)
 
     columns = ["label", "q_c_MPa", "q_c_sd_MPa", "f_s_kPa", "f_s_sd_kPa", "depth_Dc", "events", "events_loaded", "particles",
-               "I_G_near", "I_G_far", "I_G_near0", "I_G_far0", "grains_near", "grains_far", "chamber_events"]
+               "I_G_near", "I_G_far", "I_G_near0", "I_G_far0", "grains_near", "grains_far", "chamber_events",
+               "v", "I_tip", "I_chamber", "ke_share"]
     with open(os.path.join(a.dir, "penetration_%s_summary.csv" % a.out), "w") as f:
         f.write(",".join(columns) + "\n")
         for row in summary:
             f.write(",".join(row[c] if isinstance(row[c], str) else "%.6g" % row[c] for c in columns) + "\n")
     for row in summary:
         print("PENETRATION %s: q_c %.3f MPa (sd %.3f) and f_s %.2f kPa over %.1f - %.1f D_c, %d events (%d loaded to"
-              " F_lim), %d particles, I_G %.3f near the tip, %.3f far (before the test %.3f and %.3f)"
+              " F_lim), %d particles, I_G %.3f near the tip, %.3f far (before the test %.3f and %.3f); v %.3g m/s,"
+              " inertial number %.2g at the tip and %.2g in the chamber, kinetic energy %.2g of the work"
               % (row["label"], row["q_c_MPa"], row["q_c_sd_MPa"], row["f_s_kPa"], a.plateau, row["depth_Dc"],
                  row["events"], row["events_loaded"], row["particles"], row["I_G_near"], row["I_G_far"],
-                 row["I_G_near0"], row["I_G_far0"]))
+                 row["I_G_near0"], row["I_G_far0"], row["v"], row["I_tip"], row["I_chamber"], row["ke_share"]))
 
 
 if __name__ == "__main__":

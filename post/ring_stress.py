@@ -22,18 +22,35 @@ import math
 import sys
 
 
-def read_last_snapshot(path):
-    """(columns, rows) of the last snapshot of a dump custom file, rows as lists of floats."""
+def read_snapshots(path):
+    """[(timestep, columns, rows)] of every snapshot of a dump custom file, rows as lists of floats."""
     with open(path) as f:
         lines = f.read().splitlines()
     starts = [k for k, line in enumerate(lines) if line.startswith("ITEM: TIMESTEP")]
     if not starts:
         raise SystemExit("ring_stress: %s holds no dump snapshot" % path)
-    k = starts[-1]
-    natoms = int(lines[k + 3])
-    columns = lines[k + 8].split()[2:]
-    rows = [list(map(float, lines[k + 9 + n].split())) for n in range(natoms)]
+    snapshots = []
+    for k in starts:
+        natoms = int(lines[k + 3])
+        columns = lines[k + 8].split()[2:]
+        snapshots.append((int(lines[k + 1]), columns, [list(map(float, lines[k + 9 + n].split())) for n in range(natoms)]))
+    return snapshots
+
+
+def read_last_snapshot(path):
+    """(columns, rows) of the last snapshot of a dump custom file, rows as lists of floats."""
+    _, columns, rows = read_snapshots(path)[-1]
     return columns, rows
+
+
+def stress_particles(columns, rows, column="c_stress", where="dump"):
+    """(x, y, z, (s_xx, ..., s_yz)) of a snapshot's rows, from its x y z and COLUMN[1] ... COLUMN[6]."""
+    wanted = ["x", "y", "z"] + ["%s[%d]" % (column, m) for m in range(1, 7)]
+    missing = [c for c in wanted if c not in columns]
+    if missing:
+        raise SystemExit("ring_stress: %s has no column %s (columns: %s)" % (where, ", ".join(missing), " ".join(columns)))
+    at = [columns.index(c) for c in wanted]
+    return [(r[at[0]], r[at[1]], r[at[2]], tuple(r[a] for a in at[3:])) for r in rows]
 
 
 def cylindrical(s, theta):
@@ -77,13 +94,7 @@ def main(argv):
     if not (args.dr > 0 and args.dz > 0 and 0 < args.sector <= 360):
         raise SystemExit("ring_stress: --dr and --dz must be > 0 and --sector in (0, 360]")
     columns, rows = read_last_snapshot(args.dump)
-    wanted = ["x", "y", "z"] + ["%s[%d]" % (args.column, m) for m in range(1, 7)]
-    missing = [c for c in wanted if c not in columns]
-    if missing:
-        raise SystemExit("ring_stress: %s has no column %s (columns: %s)" % (args.dump, ", ".join(missing),
-                                                                           " ".join(columns)))
-    at = [columns.index(c) for c in wanted]
-    particles = [(r[at[0]], r[at[1]], r[at[2]], tuple(r[a] for a in at[3:])) for r in rows]
+    particles = stress_particles(columns, rows, args.column, args.dump)
     rings = ring_stresses(particles, args.dr, args.dz, args.x0, args.y0, args.sector)
     with open(args.out, "w", newline="") as f:
         w = csv.writer(f)

@@ -4,10 +4,12 @@
 # q_c, sleeve friction and gradings gathered in OUT_DIR/study.csv.
 #   bash scripts/penetration_study.sh [OUT_DIR (default runs/penetration)] [cases...]
 # A case is NAME (one of the table below) or a spec density:N:crushing:v:width:ranks[:distribution
-# [:sigma_v[:seed[:fragment_density]]]] (the strength distribution of in.grains, default
+# [:sigma_v[:seed[:fragment_density[:depth]]]]] (the strength distribution of in.grains, default
 # normal_clipped_originals; the vertical stress, Pa, default 1e5; the seed of the chamber's grains and
-# of their strengths, default the decks' 15485863; the fragments' density, true or scaled, default true). Default: every named case. Chambers are prepared once per (density, N, width,
-# sigma_v, seed) in OUT_DIR/chambers and copied.
+# of their strengths, default the decks' 15485863; the fragments' density, true or scaled, default
+# true; the penetration in D_c, default 8, q_c averaged over its second half). Default: every named
+# case. Chambers are prepared (in.chamber: consolidated with crushing, the element tests' protocol)
+# once per (density, N, width, depth, sigma_v, seed, fragment density) in OUT_DIR/chambers and copied.
 # The case "figures" draws doc/penetration.md's figures from the cases already run
 # (OUT_DIR/figures: q_c, events and gradings of dense_region, dense_off, loose_region, loose_off; the
 # events of dense_region_1MPa and of N80_region, N80_everywhere).
@@ -15,7 +17,10 @@
 # Writes OUT_DIR/<case>/ (the test's outputs, screen.txt, log.liggghts, the figures of
 # post/penetration.py), OUT_DIR/chambers/ and OUT_DIR/study.csv (one row a case: settings, grains,
 # particles and events at the end, steps, wall-clock seconds of the test alone, q_c and f_s over
-# 4 - 8 D_c with their spread, I_G near the tip and far from it).
+# the second half of the depth with their spread, I_G near the tip and far from it and near the tip
+# before the test, the chamber's consolidation events, the velocity, inertial numbers at the tip and
+# in the chamber, and the grains' kinetic energy over the penetrometer's work; post/penetration_stats.py
+# gathers the seeds of each setting).
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 out=$(mkdir -p "${1:-$here/runs/penetration}" && cd "${1:-$here/runs/penetration}" && pwd)
@@ -53,12 +58,12 @@ order="$order N80_off_np1 N80_region_np1 dense_region_normal dense_region_1MPa d
 order="$order N80_region_s2 N80_region_s3 N80_off_s2 N80_off_s3"
 order="$order dense_region_s2 dense_region_s3 dense_region_scaled dense_region_scaled_s2 dense_region_scaled_s3"
 cases=${*:-$order}
-[ -f "$out/study.csv" ] || echo "case,density,N,D_c_over_d50,crushing,v,width,ranks,distribution,sigma_v,seed,grains,particles,events,events_loaded,steps,seconds,q_c_MPa,q_c_sd_MPa,f_s_kPa,I_G_near,I_G_far,fragment_density" > "$out/study.csv"
+[ -f "$out/study.csv" ] || echo "case,density,N,D_c_over_d50,crushing,v,width,ranks,distribution,sigma_v,seed,grains,particles,events,events_loaded,steps,seconds,q_c_MPa,q_c_sd_MPa,f_s_kPa,I_G_near,I_G_far,fragment_density,depth,I_G_near0,chamber_events,v_measured,I_tip,I_chamber,ke_share" > "$out/study.csv"
 # OUT_DIR/figures/<N>/: the named cases' files together, drawn by post/penetration.py
 draw() {
   local n=$1 tag=$2; shift 2
   mkdir -p "$out/figures/$tag"
-  for c in "$@"; do cp "$out/$c"/penetration/{penetration_,particles_}"${c}"_N"$n".* "$out/$c"/penetration/events_pen_*.csv "$out/figures/$tag/" 2>/dev/null || true; done
+  for c in "$@"; do cp "$out/$c"/penetration/{penetration_,particles_}"${c}"_N"$n".* "$out/$c"/penetration/events_pen_*.csv "$out/$c"/penetration/*chamber_*.{csv,liggghts} "$out/figures/$tag/" 2>/dev/null || true; done
   (cd "$out/figures/$tag" && "$here/post/penetration.py" --N "$n" --Dc 0.0357 --out "$tag" "$@")
 }
 for name in $cases; do
@@ -69,34 +74,35 @@ for name in $cases; do
     continue
   fi
   s=${spec[$name]:-$name}
-  IFS=: read -r density N crushing v width ranks distribution sigma_v seed fragment_density <<< "$s"
+  IFS=: read -r density N crushing v width ranks distribution sigma_v seed fragment_density depth <<< "$s"
   distribution=${distribution:-normal_clipped_originals} sigma_v=${sigma_v:-1e5} seed=${seed:-15485863}
-  fragment_density=${fragment_density:-true}
+  fragment_density=${fragment_density:-true} depth=${depth:-8}
+  plateau=$(awk -v d="$depth" 'BEGIN {print d / 2}')
   [ -n "${ranks:-}" ] || { echo "unknown case $name (named: $order; or density:N:crushing:v:width:ranks)" >&2; exit 2; }
-  chamber=$out/chambers/${density}_N${N}_w${width}_s${sigma_v}_seed${seed}
+  chamber=$out/chambers/${density}_N${N}_w${width}_d${depth}_s${sigma_v}_seed${seed}_${fragment_density}
   if [ ! -f "$chamber/penetration/chamber_${density}_N${N}.restart" ]; then
     rm -rf "$chamber" && mkdir -p "$chamber/penetration" && cp -r "$here/examples/fontainebleau" "$chamber/"
     cp "$here"/examples/penetration/in.* "$here"/examples/penetration/*.py "$chamber/penetration/"
     echo "== chamber $density N = $N, width $width D_c, sigma_v $sigma_v Pa"
     start=$(date +%s%N)
     (cd "$chamber/penetration" && mpirun -np 2 "$liggghts" -in in.chamber -var density "$density" -var N "$N" \
-       -var width "$width" -var sigma_v "$sigma_v" -var seed "$seed" -log log.liggghts > screen.txt 2>&1) || { tail -n 5 "$chamber/penetration/screen.txt" >&2; exit 1; }
+       -var width "$width" -var depth "$depth" -var sigma_v "$sigma_v" -var seed "$seed" -var fragment_density "$fragment_density" -log log.liggghts > screen.txt 2>&1) || { tail -n 5 "$chamber/penetration/screen.txt" >&2; exit 1; }
     awk -v a="$start" -v b="$(date +%s%N)" 'BEGIN {printf "   prepared in %.1f s\n", (b - a) / 1e9}'
     grep '^CHAMBER .* N = ' "$chamber/penetration/screen.txt"
   fi
   dir=$out/$name
   rm -rf "$dir" && mkdir -p "$dir/penetration" && cp -r "$here/examples/fontainebleau" "$dir/"
-  cp "$here"/examples/penetration/in.* "$here"/examples/penetration/*.py "$chamber"/penetration/chamber_* "$dir/penetration/"
+  cp "$here"/examples/penetration/in.* "$here"/examples/penetration/*.py "$chamber"/penetration/*chamber_* "$dir/penetration/"
   vars=(-var density "$density" -var N "$N" -var crushing "$crushing" -var v "$v" -var width "$width"
         -var distribution "$distribution" -var sigma_v "$sigma_v" -var seed "$seed" -var label "$name"
-        -var fragment_density "$fragment_density")
+        -var fragment_density "$fragment_density" -var depth "$depth")
   echo "== $name: mpirun -np $ranks liggghts -in in.cone ${vars[*]}"
   start=$(date +%s%N)
   (cd "$dir/penetration" && mpirun -np "$ranks" "$liggghts" -in in.cone "${vars[@]}" -log log.liggghts > screen.txt 2>&1) \
     || { tail -n 5 "$dir/penetration/screen.txt" >&2; echo "$name failed: $dir/penetration/screen.txt" >&2; exit 1; }
   seconds=$(awk -v a="$start" -v b="$(date +%s%N)" 'BEGIN {printf "%.1f", (b - a) / 1e9}')
   grep -E '^(PENETRATED|CHECKED)' "$dir/penetration/screen.txt"
-  summary=$(cd "$dir/penetration" && "$here/post/penetration.py" --N "$N" --Dc 0.0357 --out "$name" "$name")
+  summary=$(cd "$dir/penetration" && "$here/post/penetration.py" --N "$N" --Dc 0.0357 --plateau "$plateau" --out "$name" "$name")
   echo "$summary"
   history=$dir/penetration/penetration_${name}_N${N}.csv
   python3 - "$history" "$dir/penetration/penetration_${name}_summary.csv" "$dir/penetration/chamber_${density}_N${N}.in" \
@@ -106,10 +112,11 @@ rows = list(csv.DictReader(open(sys.argv[1])))
 summary = next(csv.DictReader(open(sys.argv[2])))
 grains = int(float(open(sys.argv[3]).read().split("grains0 equal")[1].split()[0]))
 steps = int(float(re.search(r"CHECKED STEPS \\S+ OF (\\S+)", open(sys.argv[4]).read()).group(1)))
-print("$name,$density,$N,%.3f,$crushing,$v,$width,$ranks,$distribution,$sigma_v,$seed,%d,%d,%d,%s,%d,$seconds,%s,%s,%s,%s,%s,$fragment_density" % (
+print("$name,$density,$N,%.3f,$crushing,$v,$width,$ranks,$distribution,$sigma_v,$seed,%d,%d,%d,%s,%d,$seconds,%s,%s,%s,%s,%s,$fragment_density,$depth,%s,%s,%s,%s,%s,%s" % (
     0.0357 / (0.21e-3 * $N), grains, int(float(rows[-1]["particles"])), int(float(rows[-1]["events"])),
     summary["events_loaded"], steps,
-    summary["q_c_MPa"], summary["q_c_sd_MPa"], summary["f_s_kPa"], summary["I_G_near"], summary["I_G_far"]))
+    summary["q_c_MPa"], summary["q_c_sd_MPa"], summary["f_s_kPa"], summary["I_G_near"], summary["I_G_far"],
+    summary["I_G_near0"], summary["chamber_events"], summary["v"], summary["I_tip"], summary["I_chamber"], summary["ke_share"]))
 EOF
   tail -n 1 "$out/study.csv"
 done

@@ -25,6 +25,7 @@ SCRIPT = os.path.join(ROOT, "examples", "penetration", "penetrometer.py")
 DECK = os.path.join(os.path.dirname(os.path.abspath(__file__)), "penetration", "in.push")
 EXAMPLES = os.path.join(ROOT, "examples")
 POST = os.path.join(ROOT, "post", "penetration.py")
+PILE_POST = os.path.join(ROOT, "post", "pile_stress.py")
 # the small chamber: 6 D_c wide (a quarter of 3 D_c a side), 3 D_c of penetration and 2 D_c below it,
 # of grains ten times weaker than Table 1's: consolidated with crushing (in.chamber), Table 1's break
 # too rarely under a short push to test the books
@@ -137,7 +138,7 @@ def case_pile_short(liggghts, work, ranks):
     the first 0.5 D_c (a cone's builds up over its height)."""
     ranks = int(ranks)
     folder = prepare_chamber(liggghts, work, ranks)
-    push(liggghts, folder, ranks, crushing="region", vtk=0, label="pile", depth=2, tip_shape="flat")
+    push(liggghts, folder, ranks, crushing="region", vtk=0, label="pile", depth=2, tip_shape="flat", stress_every=0.5)
     history, _, _ = check_test_books(folder, "pile")
     mean = lambda v: sum(v) / len(v)  # noqa: E731
     shallow = [r["q_c"] for r in history if r["depth_Dc"] < 0.5]
@@ -147,6 +148,12 @@ def case_pile_short(liggghts, work, ranks):
     check(min(deep) > 0 and mean(shallow) > 0.5 * mean(deep),
           "q_b > 0, and from the first contact: %.3g MPa over 0 - 0.5 D_c, %.3g over 1 - 2 D_c"
           % (mean(shallow) / 1e6, mean(deep) / 1e6))
+    out = subprocess.run(["/usr/bin/python3", PILE_POST, "--label", "pile", "--N", "80", "--Dc", str(DC), "--from", "1.0",
+                          "--out", "pile"], cwd=folder, stdout=subprocess.PIPE, universal_newlines=True, check=True).stdout
+    shaft = read_rows(os.path.join(folder, "pile_shaft.csv"))
+    check(len(shaft) >= 3 and all(r["sigma_r"] > 0 for r in shaft) and os.path.exists(os.path.join(folder, "pile_maps.png")),
+          "post/pile_stress.py: sigma_r' > 0 on the shaft at %d heights, the maps drawn (%s)"
+          % (len(shaft), " ".join(out.split()[:12])))
 
 
 @variants(*each_rank_count(1, 2))

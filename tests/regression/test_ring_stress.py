@@ -88,5 +88,55 @@ def case_uniaxial_cli(liggghts, work):
         check("no column c_stress[1]" in str(e), "a dump without c_stress columns is refused naming the column")
 
 
+def case_pile_shaft_profile(liggghts, work):
+    """post/pile_stress.py on a known field that moves with the tip: a pile of D = 0.4 (R = 0.2),
+    two snapshots with the tip at z = 0.3 and 0.2 (steps 100 and 200 of the history), and in both
+    sigma_rr = q (1 + h / R) at the height h = z - z_tip above the tip (any radius), sigma_tt =
+    q / 2, sigma_zz = 2 q. Averaged in the tip's frame, the shaft's ring (r 0.2 - 0.3) gives
+    sigma_r' = q (1 + h / R) at each ring's mid-height h (the field is linear in h), within the
+    grid's 3%, the ring at h/R 1.75, which the first snapshot's field does not reach, too; a field
+    read in the box's frame instead would smear it by the tip's travel."""
+    q, Dc, cells, dz = 1e5, 0.4, 60, 0.02
+    tips, surface = {100: 0.3, 200: 0.2}, 0.5
+    cell = R / cells
+    dump = os.path.join(work, "stress_pile_N1.liggghts")
+    with open(dump, "w") as f:
+        for step, tip in sorted(tips.items()):
+            points = []
+            for k in range(30):
+                z = (k + 0.5) * dz
+                h = z - tip
+                for a in range(cells):
+                    for b in range(cells):
+                        x, y = (a + 0.5) * cell, (b + 0.5) * cell
+                        if math.hypot(x, y) >= R:
+                            continue
+                        t = math.atan2(y, x)
+                        rr, tt, zz = q * (1 + h / (Dc / 2)), q / 2, 2 * q
+                        c, n = math.cos(t), math.sin(t)
+                        tensor = (c * c * rr + n * n * tt, n * n * rr + c * c * tt, zz, c * n * (rr - tt), 0, 0)
+                        points.append((x, y, z, tuple(-cell * cell * dz * v for v in tensor)))
+            f.write("ITEM: TIMESTEP\n%d\nITEM: NUMBER OF ATOMS\n%d\nITEM: BOX BOUNDS ff ff ff\n0 1\n0 1\n0 0.6\n"
+                    "ITEM: ATOMS id x y z radius c_stress[1] c_stress[2] c_stress[3] c_stress[4] c_stress[5] c_stress[6]\n"
+                    % (step, len(points)))
+            for m, (x, y, z, s) in enumerate(points):
+                f.write("%d %.12g %.12g %.12g 0.001 %s\n" % (m + 1, x, y, z, " ".join("%.12g" % v for v in s)))
+    with open(os.path.join(work, "penetration_pile_N1.csv"), "w") as f:
+        f.write("step,tip_z,depth\n")
+        for step, tip in sorted(tips.items()):
+            f.write("%d,%g,%g\n" % (step, tip, surface - tip))
+    import pile_stress  # noqa: E402
+    pile_stress.main(["--label", "pile", "--N", "1", "--Dc", str(Dc), "--dir", work, "--from", "0", "--dr", "0.25",
+                      "--dh", "0.25"])
+    rows = list(csv.DictReader(open(os.path.join(work, "pile_shaft.csv"))))
+    # h/R 0.25 - 1.25 from both snapshots; 1.75 from the second alone (the field ends at z = 0.6):
+    # a ring is averaged over the snapshots that hold it
+    full = rows
+    worst = max(abs(float(r["sigma_r"]) / (q * (1 + float(r["h_over_R"]))) - 1) for r in full)
+    check(len(full) == 4 and worst < 0.03 and all(abs(float(r["sigma_theta"]) / (q / 2) - 1) < 0.03 for r in full),
+          "sigma_r' = q (1 + h/R) on the shaft at h/R = %s, to %.2g%%; sigma_theta = q/2"
+          % (", ".join(r["h_over_R"] for r in full), 100 * worst))
+
+
 if __name__ == "__main__":
     main(globals(), sys.argv[1:])
