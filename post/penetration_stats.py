@@ -3,7 +3,9 @@
 study.csv but the case's name and its seed), the number of seeds, the mean of q_c with its sd and
 standard error, and the means of the events, the inertial numbers, the kinetic energy's share, the
 steps and the time; then, for --vary FIELD, the change of q_c between settings that differ in FIELD
-alone, with its standard error, and whether it is resolved at 2 standard errors.
+alone, with its standard error, and whether it is resolved at 2 standard errors; where both ran
+the same seeds, the change paired by seed too (each seed's own difference, free of the chambers'
+scatter).
 
     post/penetration_stats.py study.csv [more.csv ...] [--vary v] [--vary crushing] [--markdown]
 """
@@ -33,10 +35,13 @@ def number(text):
 
 
 def groups(rows):
-    """{setting tuple: [rows]} in the order the settings first appear."""
+    """{setting tuple: [rows]} in the order the settings first appear, one row per seed (a case run
+    twice under two names, e.g. rate_v0.5_s1 and dense_region_s1, is one run: the first is kept)."""
     out = {}
     for row in rows:
-        out.setdefault(tuple(row.get(k, "") for k in SETTING), []).append(row)
+        members = out.setdefault(tuple(row.get(k, "") for k in SETTING), [])
+        if all(r["seed"] != row["seed"] for r in members):
+            members.append(row)
     return out
 
 
@@ -48,6 +53,15 @@ def summarise(rows):
         stats[field] = statistics(values) if values else (0, float("nan"), float("nan"), float("nan"))
     stats["seeds"] = ",".join(r["seed"] for r in rows)
     return stats
+
+
+def paired_change(first, second):
+    """(n, mean, sd, se) of q_c(second) - q_c(first) over the seeds both ran, or None: the seed fixes
+    the chamber and the strengths, so the pair's difference is free of their scatter."""
+    a = dict((r["seed"], number(r["q_c_MPa"])) for r in first)
+    b = dict((r["seed"], number(r["q_c_MPa"])) for r in second)
+    common = [seed for seed in a if seed in b]
+    return statistics([b[seed] - a[seed] for seed in common]) if len(common) > 1 else None
 
 
 def label(setting, skip=()):
@@ -96,6 +110,11 @@ def main():
                 resolved = "yes" if math.isfinite(se) and abs(my - mx) > 2 * se else "no"
                 print("%s: %s %s -> %s: %.2f -> %.2f MPa, change %+.2f +- %.2f (%+.0f%%), resolved: %s (%d and %d seeds)"
                       % (label(x, (field,)), field, x[at], y[at], mx, my, my - mx, se, 100 * (my / mx - 1), resolved, nx, ny))
+                paired = paired_change(groups(rows)[x], groups(rows)[y])
+                if paired:
+                    n, mean, _, se = paired
+                    print("    paired by seed (the same chamber and strengths): change %+.2f +- %.2f, resolved: %s (%d seeds)"
+                          % (mean, se, "yes" if math.isfinite(se) and abs(mean) > 2 * se else "no", n))
 
 
 if __name__ == "__main__":

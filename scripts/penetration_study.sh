@@ -3,11 +3,14 @@
 # in chambers prepared by in.chamber, one per case, each timed, then post/penetration.py's plateau
 # q_c, sleeve friction and gradings gathered in OUT_DIR/study.csv.
 #   bash scripts/penetration_study.sh [OUT_DIR (default runs/penetration)] [cases...]
+#   bash scripts/penetration_study.sh runs/evidence rate seeds pile    # doc/penetration.md's evidence
 # A case is NAME (one of the table below) or a spec density:N:crushing:v:width:ranks[:distribution
 # [:sigma_v[:seed[:fragment_density[:depth]]]]] (the strength distribution of in.grains, default
 # normal_clipped_originals; the vertical stress, Pa, default 1e5; the seed of the chamber's grains and
 # of their strengths, default the decks' 15485863; the fragments' density, true or scaled, default
-# true; the penetration in D_c, default 8, q_c averaged over its second half). Default: every named
+# true; the penetration in D_c, default 8, q_c averaged over its second half; then in.cone's and
+# in.chamber's further variables as name=value,name=value, e.g. tip_shape=flat,stress_every=0.5 and
+# mu_prep=0.1). Default: every named
 # case. Chambers are prepared (in.chamber: consolidated with crushing, the element tests' protocol)
 # once per (density, N, width, depth, sigma_v, seed, fragment density) in OUT_DIR/chambers and copied.
 # The case "figures" draws doc/penetration.md's figures from the cases already run
@@ -57,7 +60,43 @@ order="dense_region dense_off loose_region loose_off N80_region N80_off N80_ever
 order="$order N80_off_np1 N80_region_np1 dense_region_normal dense_region_1MPa dense_off_1MPa"
 order="$order N80_region_s2 N80_region_s3 N80_off_s2 N80_off_s3"
 order="$order dense_region_s2 dense_region_s3 dense_region_scaled dense_region_scaled_s2 dense_region_scaled_s3"
-cases=${*:-$order}
+# The evidence of doc/penetration.md (the element tests' protocol: chambers consolidated with
+# crushing): N = 80, 10 D_c wide, 4 D_c of penetration (q_c over 2 - 4 D_c), fragment_density
+# scaled, three seeds each. Groups: rate (v = 2, 1, 0.5, 0.25, 0.125 m/s, dense, crushing in the
+# zone, 100 kPa), seeds (at the chosen velocity V: dense and loose at 100 kPa, dense at 1 MPa, each
+# with crushing in the zone and without; at 1 MPa crushing everywhere too), pile (the closed-ended
+# pile at V in the dense chamber, whose prepared porosity 0.385 is the INPG tests' e0 = 0.62
+# (0.626), with crushing in the zone and without, with stress dumps every 0.5 D_c), knob (dense_region_s* at V with the fragments' true density, chamber
+# and test, and with neighbour lists by bin instead of by size class).
+V=${PENETRATION_V:-0.5}
+seeds=(15485863 179424673 373587883)
+declare -A group=()
+for k in 1 2 3; do
+  seed=${seeds[k-1]}
+  for v in 2 1 0.5 0.25 0.125; do
+    spec[rate_v${v}_s$k]=dense:80:region:$v:10:2:normal_clipped_originals:1e5:$seed:scaled:4
+    group[rate]+=" rate_v${v}_s$k"
+  done
+  for d in dense loose; do
+    for c in region 0; do
+      spec[${d}_${c}_s$k]=$d:80:$c:$V:10:2:normal_clipped_originals:1e5:$seed:scaled:4
+      group[seeds]+=" ${d}_${c}_s$k"
+    done
+  done
+  for c in region 0 1; do
+    spec[dense_1MPa_${c}_s$k]=dense:80:$c:$V:10:2:normal_clipped_originals:1e6:$seed:scaled:4
+    group[seeds]+=" dense_1MPa_${c}_s$k"
+  done
+  spec[knob_true_s$k]=dense:80:region:$V:10:2:normal_clipped_originals:1e5:$seed:true:4
+  spec[knob_bin_s$k]=dense:80:region:$V:10:2:normal_clipped_originals:1e5:$seed:scaled:4:neighbor_style=bin
+  group[knob]+=" knob_true_s$k knob_bin_s$k"
+  for c in region 0; do
+    spec[pile_${c}_s$k]=dense:80:$c:$V:10:2:normal_clipped_originals:1e5:$seed:scaled:4:tip_shape=flat,stress_every=0.5
+    group[pile]+=" pile_${c}_s$k"
+  done
+done
+cases=""
+for c in ${*:-$order}; do cases+=" ${group[$c]:-$c}"; done
 [ -f "$out/study.csv" ] || echo "case,density,N,D_c_over_d50,crushing,v,width,ranks,distribution,sigma_v,seed,grains,particles,events,events_loaded,steps,seconds,q_c_MPa,q_c_sd_MPa,f_s_kPa,I_G_near,I_G_far,fragment_density,depth,I_G_near0,chamber_events,v_measured,I_tip,I_chamber,ke_share" > "$out/study.csv"
 # OUT_DIR/figures/<N>/: the named cases' files together, drawn by post/penetration.py
 draw() {
@@ -74,19 +113,22 @@ for name in $cases; do
     continue
   fi
   s=${spec[$name]:-$name}
-  IFS=: read -r density N crushing v width ranks distribution sigma_v seed fragment_density depth <<< "$s"
+  IFS=: read -r density N crushing v width ranks distribution sigma_v seed fragment_density depth cone_vars chamber_vars <<< "$s"
   distribution=${distribution:-normal_clipped_originals} sigma_v=${sigma_v:-1e5} seed=${seed:-15485863}
   fragment_density=${fragment_density:-true} depth=${depth:-8}
   plateau=$(awk -v d="$depth" 'BEGIN {print d / 2}')
+  extra_cone=() extra_chamber=()
+  for kv in ${cone_vars//,/ }; do extra_cone+=(-var "${kv%%=*}" "${kv#*=}"); done
+  for kv in ${chamber_vars//,/ }; do extra_chamber+=(-var "${kv%%=*}" "${kv#*=}"); done
   [ -n "${ranks:-}" ] || { echo "unknown case $name (named: $order; or density:N:crushing:v:width:ranks)" >&2; exit 2; }
-  chamber=$out/chambers/${density}_N${N}_w${width}_d${depth}_s${sigma_v}_seed${seed}_${fragment_density}
+  chamber=$out/chambers/${density}_N${N}_w${width}_d${depth}_s${sigma_v}_seed${seed}_${fragment_density}${chamber_vars:+_${chamber_vars//[=,]/_}}
   if [ ! -f "$chamber/penetration/chamber_${density}_N${N}.restart" ]; then
     rm -rf "$chamber" && mkdir -p "$chamber/penetration" && cp -r "$here/examples/fontainebleau" "$chamber/"
     cp "$here"/examples/penetration/in.* "$here"/examples/penetration/*.py "$chamber/penetration/"
     echo "== chamber $density N = $N, width $width D_c, sigma_v $sigma_v Pa"
     start=$(date +%s%N)
     (cd "$chamber/penetration" && mpirun -np 2 "$liggghts" -in in.chamber -var density "$density" -var N "$N" \
-       -var width "$width" -var depth "$depth" -var sigma_v "$sigma_v" -var seed "$seed" -var fragment_density "$fragment_density" -log log.liggghts > screen.txt 2>&1) || { tail -n 5 "$chamber/penetration/screen.txt" >&2; exit 1; }
+       -var width "$width" -var depth "$depth" -var sigma_v "$sigma_v" -var seed "$seed" -var fragment_density "$fragment_density" "${extra_chamber[@]}" -log log.liggghts > screen.txt 2>&1) || { tail -n 5 "$chamber/penetration/screen.txt" >&2; exit 1; }
     awk -v a="$start" -v b="$(date +%s%N)" 'BEGIN {printf "   prepared in %.1f s\n", (b - a) / 1e9}'
     grep '^CHAMBER .* N = ' "$chamber/penetration/screen.txt"
   fi
@@ -95,14 +137,17 @@ for name in $cases; do
   cp "$here"/examples/penetration/in.* "$here"/examples/penetration/*.py "$chamber"/penetration/*chamber_* "$dir/penetration/"
   vars=(-var density "$density" -var N "$N" -var crushing "$crushing" -var v "$v" -var width "$width"
         -var distribution "$distribution" -var sigma_v "$sigma_v" -var seed "$seed" -var label "$name"
-        -var fragment_density "$fragment_density" -var depth "$depth")
+        -var fragment_density "$fragment_density" -var depth "$depth" "${extra_cone[@]}" "${extra_chamber[@]}")
   echo "== $name: mpirun -np $ranks liggghts -in in.cone ${vars[*]}"
   start=$(date +%s%N)
   (cd "$dir/penetration" && mpirun -np "$ranks" "$liggghts" -in in.cone "${vars[@]}" -log log.liggghts > screen.txt 2>&1) \
     || { tail -n 5 "$dir/penetration/screen.txt" >&2; echo "$name failed: $dir/penetration/screen.txt" >&2; exit 1; }
   seconds=$(awk -v a="$start" -v b="$(date +%s%N)" 'BEGIN {printf "%.1f", (b - a) / 1e9}')
   grep -E '^(PENETRATED|CHECKED)' "$dir/penetration/screen.txt"
-  summary=$(cd "$dir/penetration" && "$here/post/penetration.py" --N "$N" --Dc 0.0357 --plateau "$plateau" --out "$name" "$name")
+  consolidation=()
+  [ ! -f "$dir/penetration/events_chamber_${density}_N${N}.csv" ] || consolidation=(--chamber "events_chamber_${density}_N${N}.csv")
+  summary=$(cd "$dir/penetration" && "$here/post/penetration.py" --N "$N" --Dc 0.0357 --plateau "$plateau" --out "$name" \
+             "${consolidation[@]}" "$name")
   echo "$summary"
   history=$dir/penetration/penetration_${name}_N${N}.csv
   python3 - "$history" "$dir/penetration/penetration_${name}_summary.csv" "$dir/penetration/chamber_${density}_N${N}.in" \
