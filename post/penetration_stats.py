@@ -3,7 +3,8 @@
 study.csv but the case's name and its seed), the number of seeds, the mean of q_c with its sd and
 standard error, and the means of the events, the inertial numbers, the kinetic energy's share, the
 steps and the time; then, for --vary FIELD, the change of q_c between settings that differ in FIELD
-alone, with its standard error, and whether it is resolved at 2 standard errors; where both ran
+alone (a numeric field's values in turn; a named field's against its first value: crushing 0,
+dense), with its standard error, and whether it is resolved at 2 standard errors; where both ran
 the same seeds, the change paired by seed too (each seed's own difference, free of the chambers'
 scatter).
 
@@ -103,8 +104,11 @@ def main():
         for rest, members in others.items():
             if len(members) < 2:
                 continue
-            members.sort(key=lambda s: number(s[at]) if math.isfinite(number(s[at])) else s[at])
-            for x, y in zip(members, members[1:]):
+            numeric = all(math.isfinite(number(m[at])) for m in members)
+            members.sort(key=lambda m: (0, number(m[at]), "") if math.isfinite(number(m[at])) else (1, 0.0, m[at]))
+            # a numeric field (v, sigma_v): each value against the next; a named one (crushing,
+            # density): each against the first (crushing 0, dense)
+            for x, y in (zip(members, members[1:]) if numeric else ((members[0], m) for m in members[1:])):
                 (nx, mx, _, ex), (ny, my, _, ey) = table[x]["q_c_MPa"], table[y]["q_c_MPa"]
                 se = math.sqrt(ex ** 2 + ey ** 2)
                 resolved = "yes" if math.isfinite(se) and abs(my - mx) > 2 * se else "no"

@@ -8,9 +8,11 @@ tip h / R, from the rings next to the shaft; and maps of the three stresses.
     post/pile_stress.py --label pile_region --N 80 --Dc 0.0357 [--dir .] [--from 1.5] [--dr 0.25]
                         [--dh 0.25] [--out OUT]
 
-Reads stress_LABEL_N<N>.liggghts (x y z and compute stress/atom, post/ring_stress.py's convention)
+--label may list tests (seeds of one setting, comma-separated, with --dir one folder or one per
+label): their snapshots are averaged together, each in its own tip's frame. Reads, for each,
+stress_LABEL_N<N>.liggghts (x y z and compute stress/atom, post/ring_stress.py's convention)
 and penetration_LABEL_N<N>.csv (the tip's height at each step, interpolated). --dr and --dh are in
-D_c. Writes OUT_rings.csv (r/R, h/R, particles, sigma_rr, sigma_tt, sigma_zz, sigma_rz in Pa, the
+D_c. Writes, in the first folder, OUT_rings.csv (r/R, h/R, particles, sigma_rr, sigma_tt, sigma_zz, sigma_rz in Pa, the
 snapshots' mean, over those with particles in the ring), OUT_shaft.csv (h/R and sigma_r' in the first ring outside the shaft), OUT_maps.png
 and OUT_shaft.png, and prints the shaft's profile.
 """
@@ -41,13 +43,13 @@ def tip_at(history, step):
     return z1 + (step - s1) / (s1 - s0) * (z1 - z0)
 
 
-def averaged_rings(snapshots, history, surface, Dc, start, dr, dh):
+def averaged_rings(snapshots, Dc, start, dr, dh):
     """{(i, k): [particles, rr, tt, zz, rz]}: each snapshot's rings in the tip's frame (h = z - z_tip),
     averaged over the snapshots whose tip is at least start D_c deep and which have particles in the
     ring (a ring above the sand's surface early on is not a ring of zero stress); and the number of
-    snapshots used."""
+    snapshots used. snapshots: (step, columns, rows, the test's history, its surface's height)."""
     total, seen, used = {}, {}, 0
-    for step, columns, rows in snapshots:
+    for step, columns, rows, history, surface in snapshots:
         tip = tip_at(history, step)
         if (surface - tip) / Dc < start:
             continue
@@ -73,20 +75,29 @@ def main(argv):
     ap.add_argument("--out")
     a = ap.parse_args(argv)
     n_label = "%g" % a.N
-    out = a.out or a.label
-    dump = os.path.join(a.dir, "stress_%s_N%s.liggghts" % (a.label, n_label))
-    path = os.path.join(a.dir, "penetration_%s_N%s.csv" % (a.label, n_label))
-    for f in (dump, path):
-        if not os.path.exists(f):
-            raise SystemExit("pile_stress: no %s (run in.cone with -var label %s -var stress_every D)" % (f, a.label))
-    with open(path) as f:
-        history = [dict((k, float(v)) for k, v in row.items()) for row in csv.DictReader(f)]
-    surface = history[0]["tip_z"] + history[0]["depth"]
-    R = a.Dc / 2
-    rings, used = averaged_rings(read_snapshots(dump), history, surface, a.Dc, a.start, a.dr * a.Dc, a.dh * a.Dc)
+    labels, dirs = a.label.split(","), a.dir.split(",")
+    if len(dirs) == 1:
+        dirs = dirs * len(labels)
+    if len(dirs) != len(labels):
+        raise SystemExit("pile_stress: --dir gives %d folders for %d labels (one, or one per label)" % (len(dirs), len(labels)))
+    out = os.path.join(dirs[0], a.out or labels[0])
+    snapshots, used, R = [], 0, a.Dc / 2
+    rings = {}
+    for label, folder in zip(labels, dirs):
+        dump = os.path.join(folder, "stress_%s_N%s.liggghts" % (label, n_label))
+        path = os.path.join(folder, "penetration_%s_N%s.csv" % (label, n_label))
+        for f in (dump, path):
+            if not os.path.exists(f):
+                raise SystemExit("pile_stress: no %s (run in.cone with -var label %s -var stress_every D)" % (f, label))
+        with open(path) as f:
+            history = [dict((k, float(v)) for k, v in row.items()) for row in csv.DictReader(f)]
+        surface = history[0]["tip_z"] + history[0]["depth"]
+        # each test's snapshots in its own tip's frame, together (the tests are seeds of one setting)
+        snapshots += [(step, columns, rows, history, surface) for step, columns, rows in read_snapshots(dump)]
+    rings, used = averaged_rings(snapshots, a.Dc, a.start, a.dr * a.Dc, a.dh * a.Dc)
     if not used:
-        raise SystemExit("pile_stress: no snapshot of %s with the tip %.2f D_c deep or more" % (dump, a.start))
-    with open(os.path.join(a.dir, out + "_rings.csv"), "w") as f:
+        raise SystemExit("pile_stress: no snapshot of %s with the tip %.2f D_c deep or more" % (a.label, a.start))
+    with open(out + "_rings.csv", "w") as f:
         f.write("r_over_R,h_over_R,particles,sigma_rr,sigma_tt,sigma_zz,sigma_rz\n")
         for (i, k) in sorted(rings):
             count, rr, tt, zz, rz = rings[(i, k)]
@@ -94,7 +105,7 @@ def main(argv):
     # the shaft's ring: the first whose inner radius is at or beyond R
     first = int(math.ceil(0.5 / a.dr - 1e-9))
     shaft = sorted((k, rings[(i, k)]) for (i, k) in rings if i == first and k >= 0)
-    with open(os.path.join(a.dir, out + "_shaft.csv"), "w") as f:
+    with open(out + "_shaft.csv", "w") as f:
         f.write("h_over_R,particles,sigma_r,sigma_theta,sigma_z\n")
         for k, (count, rr, tt, zz, _) in shaft:
             f.write("%.4g,%.1f,%.6g,%.6g,%.6g\n" % ((k + 0.5) * a.dh * 2, count, rr, tt, zz))
@@ -120,14 +131,14 @@ def main(argv):
     axes[0].set_ylabel("h / R (height above the tip)")
     fig.suptitle("%s: ring-averaged stresses in the tip's frame, %d snapshots" % (a.label, used))
     fig.tight_layout()
-    fig.savefig(os.path.join(a.dir, out + "_maps.png"), dpi=110)
+    fig.savefig(out + "_maps.png", dpi=110)
     fig, ax = plt.subplots(figsize=(5, 5))
     ax.plot([rr / 1e3 for _, (_, rr, _, _, _) in shaft], [(k + 0.5) * a.dh * 2 for k, _ in shaft], "o-")
     ax.set_xlabel("sigma_r' on the shaft (kPa)")
     ax.set_ylabel("h / R")
     ax.grid(alpha=0.3)
     fig.tight_layout()
-    fig.savefig(os.path.join(a.dir, out + "_shaft.png"), dpi=110)
+    fig.savefig(out + "_shaft.png", dpi=110)
 
 
 if __name__ == "__main__":

@@ -92,6 +92,63 @@ def case_round_trip_weibull(liggghts, work):
     check(p["distribution"] == "weibull", "the line takes the weibull: %s" % p["distribution"])
 
 
+def case_summary_exact(liggghts, work):
+    """A class's failure forces Weibull(m_t, F_0) give strengths k(d) F^(1/3): a Weibull of modulus
+    3 m_t, whose mean is k F_0^(1/3) Gamma(1 + 1/(3 m_t)) and cv sqrt(G2/G1^2 - 1), checked against
+    eq. 5's inversion of a million drawn forces; sigma_0 = F_0/d^2 reads as F_0."""
+    import numpy as np
+    E_eff = calibrate.effective_modulus(*calibrate.DEFAULT_GRAIN, *calibrate.DEFAULT_PLATEN)
+    c = {"d": np.array([1e-3]), "n": np.array([30]), "m_t": np.array([2.5]), "F_0": np.array([40.0]),
+         "E_eff": np.array([E_eff])}
+    mean, cv = calibrate.class_strengths(c)
+    F = np.random.default_rng(3).weibull(2.5, 1000000) * 40.0
+    s = calibrate.strength_from_force(F, 1e-3, E_eff)
+    check(abs(mean[0] / s.mean() - 1) < 1e-3 and abs(cv[0] / (s.std() / s.mean()) - 1) < 5e-3,
+          "mean %.5g Pa and cv %.4f against the draws' %.5g and %.4f" % (mean[0], cv[0], s.mean(), s.std() / s.mean()))
+    path = os.path.join(work, "sigma0.csv")
+    open(path, "w").write("d,n,m_t,sigma_0\n1e-3,30,2.5,4e7\n2e-3,30,2.5,2e7\n")
+    read = calibrate.read_summary(path)
+    check(np.allclose(read["F_0"], [40.0, 80.0]), "sigma_0 = F_0 / d^2: F_0 %s N" % read["F_0"])
+
+
+def case_summary_round_trip(liggghts, work):
+    """Summary statistics made from a set of known parameters (fix crush's weibull, m = 9, mean
+    1.5 GPa at d0 = 1 mm; sizes 0.5 - 2 mm, 40 grains each): each class's failure forces fitted by
+    a Weibull (scipy), written as d, n, m_t, F_0; calibrate.py summary gives back m and sigma_lim0
+    within its intervals, and takes the weibull (the classes' modulus 3 m_t within the size
+    effect's interval)."""
+    import numpy as np
+    from scipy import stats
+    data = os.path.join(work, "grains.csv")
+    rc, _, err = calibrate_cli("synthetic", data, "--sigma_lim0", 1.5e9, "--cv", 0, "--weibull_m", 9, "--d0", 1e-3,
+                               "--sizes", "0.5e-3,1e-3,2e-3", "--per-size", 40, "--seed", 11, "--distribution", "weibull")
+    check(rc == 0, "synthetic draws the grains " + err)
+    grains = np.loadtxt(data, delimiter=",", comments="#", skiprows=4)
+    table = os.path.join(work, "summary.csv")
+    with open(table, "w") as f:
+        f.write("# per-class Weibull fits of the failure forces of %s\nd,n,m_t,F_0\n" % os.path.basename(data))
+        for d in np.unique(grains[:, 0]):
+            F = grains[grains[:, 0] == d, 1]
+            m_t, _, F_0 = stats.weibull_min.fit(F, floc=0.0)
+            f.write("%g,%d,%.6g,%.6g\n" % (d, len(F), m_t, F_0))
+    out = os.path.join(work, "fit_summary")
+    rc, stdout, err = calibrate_cli("summary", table, "--d0", 1e-3, "--bootstrap", 200, "--out", out)
+    check(rc == 0, "summary fits the table (exit %d) %s" % (rc, err[-300:]))
+    print(stdout)
+    p = json.load(open(os.path.join(out, "parameters.json")))
+    within("weibull_m", 9.0, p["weibull_m_ci"])
+    within("sigma_lim0", 1.5e9, p["sigma_lim0_ci"])
+    check(p["distribution"] == "weibull" and p["fix_crush"] in stdout and "against Table 1" in stdout,
+          "the line takes the weibull and is printed, with Table 1 beside it: " + p["fix_crush"])
+    bad = os.path.join(work, "one_class.csv")
+    open(bad, "w").write("d,n,m_t,F_0\n1e-3,30,3,40\n")
+    rc, _, err = calibrate_cli("summary", bad, "--out", os.path.join(work, "bad"))
+    check(rc != 0 and "1 size class" in err, "one size class is refused: " + err.strip())
+    open(bad, "w").write("d,n,m_t,F_0\n1e-3,30,3,40\n2e-3,3,3,60\n")
+    rc, _, err = calibrate_cli("summary", bad, "--out", os.path.join(work, "bad"))
+    check(rc != 0 and "line 3" in err and "n = 3" in err, "a class of 3 grains is named with its line: " + err.strip())
+
+
 def bad_data(work, name, text):
     path = os.path.join(work, name)
     open(path, "w").write(text)
