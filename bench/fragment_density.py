@@ -21,7 +21,7 @@ import sys
 
 RHO = 2650.0          # kg/m^3, the decks' grains (in.grading)
 D_CONE = 0.0357       # m (penetrometer.py)
-V_CONE = 2.0          # m/s (in.cone's default)
+V_CONE = 2.0          # m/s (the velocity of the study cases it reads: scripts/penetration_study.sh)
 
 
 def rows(path):

@@ -17,7 +17,7 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cp -r "$here/examples/fontainebleau" "$here/examples/penetration" "$work/"
 cd "$work/penetration"
-vars=(-var N "$n" -var width "$width" -var depth "$depth" -var crushing region -var vtk 0 -var checkpoint_every 0)
+vars=(-var N "$n" -var width "$width" -var depth "$depth" -var crushing region -var v 2 -var vtk 0 -var checkpoint_every 0)
 mpirun -np 2 "$liggghts" -in in.chamber "${vars[@]}" -log chamber.log > chamber.txt 2>&1 || { tail -5 chamber.txt; exit 1; }
 grep '^CHAMBER .* N = ' chamber.txt
 ratios=() step_ratios=()

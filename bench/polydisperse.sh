@@ -88,7 +88,7 @@ fi
 
 # cone_run STYLE: seconds per particle-step over the test's stretches, neighbours per particle
 cone_run() {
-  (cd "$cone/penetration" && mpirun -np 2 "$liggghts" -in in.cone "${chamber[@]}" -var crushing 1 -var vtk 0 \
+  (cd "$cone/penetration" && mpirun -np 2 "$liggghts" -in in.cone "${chamber[@]}" -var crushing 1 -var v 2 -var vtk 0 \
      -var label "$1" -var neighbor_style "$1" -log log.$1 > cone_$1.txt 2>&1) \
     || { tail -5 "$cone/penetration/cone_$1.txt"; exit 1; }
   awk '/^Loop time of/ {t += $4; w += $9 * $12} /^Ave neighs\/atom/ {a = $NF}

@@ -3,15 +3,15 @@
 # in chambers prepared by in.chamber, one per case, each timed, then post/penetration.py's plateau
 # q_c, sleeve friction and gradings gathered in OUT_DIR/study.csv.
 #   bash scripts/penetration_study.sh [OUT_DIR (default runs/penetration)] [cases...]
-#   bash scripts/penetration_study.sh runs/evidence rate seeds pile    # doc/penetration.md's evidence
+#   bash scripts/penetration_study.sh runs/evidence rate seeds more pile knob weak   # doc/penetration.md's evidence
 # A case is NAME (one of the table below) or a spec density:N:crushing:v:width:ranks[:distribution
 # [:sigma_v[:seed[:fragment_density[:depth]]]]] (the strength distribution of in.grains, default
 # normal_clipped_originals; the vertical stress, Pa, default 1e5; the seed of the chamber's grains and
 # of their strengths, default the decks' 15485863; the fragments' density, true or scaled, default
 # true; the penetration in D_c, default 8, q_c averaged over its second half; then in.cone's and
 # in.chamber's further variables as name=value,name=value, e.g. tip_shape=flat,stress_every=0.5 and
-# mu_prep=0.1). Default: every named
-# case. Chambers are prepared (in.chamber: consolidated with crushing, the element tests' protocol)
+# mu_prep=0.1). Default: every named case (the earlier study's; the groups below are named
+# explicitly). A case already in OUT_DIR/study.csv is skipped. Chambers are prepared (in.chamber: consolidated with crushing, the element tests' protocol)
 # once per (density, N, width, depth, sigma_v, seed, fragment density) in OUT_DIR/chambers and copied.
 # The case "figures" draws doc/penetration.md's figures from the cases already run
 # (OUT_DIR/figures: q_c, events and gradings of dense_region, dense_off, loose_region, loose_off; the
@@ -62,20 +62,42 @@ order="$order N80_region_s2 N80_region_s3 N80_off_s2 N80_off_s3"
 order="$order dense_region_s2 dense_region_s3 dense_region_scaled dense_region_scaled_s2 dense_region_scaled_s3"
 # The evidence of doc/penetration.md (the element tests' protocol: chambers consolidated with
 # crushing): N = 80, 10 D_c wide, 4 D_c of penetration (q_c over 2 - 4 D_c), fragment_density
-# scaled, three seeds each. Groups: rate (v = 2, 1, 0.5, 0.25, 0.125 m/s, dense, crushing in the
+# scaled. Groups: rate (v = 2, 1, 0.5, 0.25, 0.125 m/s, dense, crushing in the
 # zone, 100 kPa), seeds (at the chosen velocity V: dense and loose at 100 kPa, dense at 1 MPa, each
 # with crushing in the zone and without; at 1 MPa crushing everywhere too), pile (the closed-ended
 # pile at V in the dense chamber, whose prepared porosity 0.385 is the INPG tests' e0 = 0.62
-# (0.626), with crushing in the zone and without, with stress dumps every 0.5 D_c), knob (dense_region_s* at V with the fragments' true density, chamber
-# and test, and with neighbour lists by bin instead of by size class).
+# (0.626), with crushing in the zone and without, with stress dumps every 0.5 D_c), knob
+# (dense_region_s* at V with the fragments' true density, chamber and test, and with neighbour
+# lists by bin instead of by size class), weak (as seeds at 100 kPa, of
+# grains ten times weaker: sigma_lim0 = 0.5 GPa, chamber and test; the cone, and the pile with
+# crushing everywhere too). The rate study has six seeds, crushing everywhere or none at 1 MPa six
+# too (group more: seeds 4 - 6), the other groups three. V (PENETRATION_V) is 0.5 m/s, the velocity
+# the groups ran at; the six-seed rate study then chose 0.25 m/s for in.cone (doc/penetration.md).
 V=${PENETRATION_V:-0.5}
-seeds=(15485863 179424673 373587883)
+seeds=(15485863 179424673 373587883 573259391 776531419 982451653)
 declare -A group=()
-for k in 1 2 3; do
+for k in 1 2 3 4 5 6; do
   seed=${seeds[k-1]}
   for v in 2 1 0.5 0.25 0.125; do
     spec[rate_v${v}_s$k]=dense:80:region:$v:10:2:normal_clipped_originals:1e5:$seed:scaled:4
     group[rate]+=" rate_v${v}_s$k"
+  done
+  if [ "$k" -gt 3 ]; then   # seeds 4 - 6: the rate study, and crushing everywhere or none at 1 MPa
+    for c in 0 1; do
+      spec[dense_1MPa_${c}_s$k]=dense:80:$c:$V:10:2:normal_clipped_originals:1e6:$seed:scaled:4
+      group[more]+=" dense_1MPa_${c}_s$k"
+    done
+    continue
+  fi
+  for d in dense loose; do
+    for c in region 0; do
+      spec[weak_${d}_${c}_s$k]=$d:80:$c:$V:10:2:normal_clipped_originals:1e5:$seed:scaled:4::sigma_lim0=5e8
+      group[weak]+=" weak_${d}_${c}_s$k"
+    done
+  done
+  for c in region 0 1; do
+    spec[weak_pile_${c}_s$k]=dense:80:$c:$V:10:2:normal_clipped_originals:1e5:$seed:scaled:4:tip_shape=flat,stress_every=0.5:sigma_lim0=5e8
+    group[weak]+=" weak_pile_${c}_s$k"
   done
   for d in dense loose; do
     for c in region 0; do
@@ -112,6 +134,7 @@ for name in $cases; do
     draw 80 N80 N80_region N80_everywhere N80_off
     continue
   fi
+  if grep -q "^$name," "$out/study.csv"; then echo "== $name: in $out/study.csv already, skipped"; continue; fi
   s=${spec[$name]:-$name}
   IFS=: read -r density N crushing v width ranks distribution sigma_v seed fragment_density depth cone_vars chamber_vars <<< "$s"
   distribution=${distribution:-normal_clipped_originals} sigma_v=${sigma_v:-1e5} seed=${seed:-15485863}
