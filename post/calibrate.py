@@ -8,6 +8,7 @@ to the fix crush line, checked by the DEM, and against an oedometric compression
                                  --per-size N --seed SEED [--distribution normal|weibull]
   calibrate.py summary SUMMARY.csv [--d0 D0] [--grain-E E ...] [--scale N] [--out DIR]
                                  (published summary statistics: per size class d, n, m_t and F_0 or sigma_0)
+  calibrate.py moduli MODULI.csv [--out DIR]  (published moduli without strengths, against Table 1)
   calibrate.py population FIT_DIR --per-size N --out DIR      (the grains of the DEM check)
   calibrate.py compare DATA.csv FIT_DIR RUN_DIR [--out DIR]   (DEM failure forces against the data)
   calibrate.py oedometer LAB.csv [--sigma_lim0 S1,S2,..] [--cv C1,C2,..] [--from FIT_DIR]
@@ -22,6 +23,10 @@ Data (summary): one row per size class, for papers that give only summary statis
 diameter, m), n (grains tested), m_t (the Weibull modulus of the class's failure forces, or of F/d^2:
 the same at one size) and F_0 (the characteristic failure force, 37% survival, N) or sigma_0 (the
 characteristic F/d^2, Pa); the moduli columns as above, optional.
+
+Data (moduli): published statistics without strengths, one a row: source, material, quantity (m_t:
+the Weibull modulus of the failure forces of one size; strength_ratio: the characteristic F/d^2 of
+d_small over that of d_large), low and high (the stated range), d_small and d_large (m, for a ratio).
 
 The model's limit (Ciantia et al. 2014, eq. 5) is a contact stress:
     F_lim = [sigma_lim pi (3 r'/(4 E'))^(2/3)]^3
@@ -446,13 +451,18 @@ def read_summary(path, grain=DEFAULT_GRAIN, platen=DEFAULT_PLATEN):
     return dict((k, np.array(v)) for k, v in (("d", d), ("n", n), ("m_t", m_t), ("F_0", F_0), ("E_eff", E_eff)))
 
 
+def strength_cv(shape):
+    """The cv of a Weibull law of modulus shape."""
+    g1, g2 = special.gamma(1 + 1 / shape), special.gamma(1 + 2 / shape)
+    return np.sqrt(g2 / g1 ** 2 - 1.0)
+
+
 def class_strengths(c):
     """The exact law of each class's strengths: F ~ Weibull(m_t, F_0) makes sigma_lim = k(d) F^(1/3)
     (eq. 5 inverted) a Weibull of modulus 3 m_t and scale k F_0^(1/3). Returns its means and cvs."""
     shape = 3.0 * c["m_t"]
     scale = strength_from_force(c["F_0"], c["d"], c["E_eff"])
-    g1, g2 = special.gamma(1 + 1 / shape), special.gamma(1 + 2 / shape)
-    return scale * g1, np.sqrt(g2 / g1 ** 2 - 1.0)
+    return scale * special.gamma(1 + 1 / shape), strength_cv(shape)
 
 
 def summary_estimates(c, d0):
@@ -516,6 +526,93 @@ def summary(args):
     p["fix_crush"] = line
     json.dump(p, open(os.path.join(args.out, "parameters.json"), "w"), indent=1)
     print("wrote %s/parameters.json" % args.out)
+
+
+# ---------------------------------------------------------------------------------------------
+# published moduli without strengths: the scatter and the size effect, against Table 1
+
+def m_t_of_cv(cv):
+    """The Weibull modulus of the failure forces whose strengths (modulus 3 m_t) have this cv."""
+    return optimize.brentq(lambda k: strength_cv(k) - cv, 0.05, 1e3) / 3.0
+
+
+def weibull_m_of_ratio(ratio, d_small, d_large):
+    """weibull_m from the ratio of the characteristic F/d^2 of d_small to that of d_large: F/d^2 ~
+    d^-b makes sigma_lim ~ (F/d^2)^(1/3) ~ d^(-b/3) (eq. 5 inverted) = d^(-3/m)."""
+    return 9.0 * math.log(d_large / d_small) / math.log(ratio)
+
+
+def ratio_of_weibull_m(weibull_m, d_small, d_large):
+    return (d_large / d_small) ** (9.0 / weibull_m)
+
+
+def read_moduli(path):
+    """Rows of published statistics: source, material, quantity (m_t or strength_ratio), low, high,
+    and for strength_ratio the sizes d_small, d_large (m)."""
+    header, rows = data_rows(path)
+    for column in ("source", "material", "quantity", "low", "high", "d_small", "d_large"):
+        if column not in header:
+            raise DataError("%s: no column '%s' in the header (%s)" % (path, column, ",".join(header)))
+    out = []
+    for line, row in rows:
+        q = row["quantity"]
+        if q not in ("m_t", "strength_ratio"):
+            raise DataError("%s, line %d: quantity = '%s': expected m_t (Weibull modulus of the failure forces at one "
+                            "size) or strength_ratio (characteristic F/d^2 of d_small over that of d_large)" % (path, line, q))
+        low, high = positive_number(path, line, row, "low"), positive_number(path, line, row, "high")
+        if high < low:
+            raise DataError("%s, line %d: high = %s is below low = %s" % (path, line, row["high"], row["low"]))
+        r = {"source": row["source"], "material": row["material"], "quantity": q, "low": low, "high": high}
+        if q == "strength_ratio":
+            r["d_small"] = positive_number(path, line, row, "d_small")
+            r["d_large"] = positive_number(path, line, row, "d_large")
+            if r["d_large"] <= r["d_small"]:
+                raise DataError("%s, line %d: d_large = %s must exceed d_small = %s" % (path, line, row["d_large"], row["d_small"]))
+            if low <= 1.0:
+                raise DataError("%s, line %d: low = %s: a strength ratio of the smaller size over the larger is above 1"
+                                % (path, line, row["low"]))
+        out.append(r)
+    return out
+
+
+def place_modulus(r):
+    """What one published statistic says of fix crush's cv and weibull_m, and Table 1 in its terms."""
+    if r["quantity"] == "m_t":
+        # a class's strengths are a Weibull of modulus 3 m_t (class_strengths); Weibull's own size
+        # effect (characteristic F/d^2 ~ d^(-3/m_t), McDowell & Amon 2000) is weibull_m = 3 m_t
+        return {"cv": (float(strength_cv(3 * r["high"])), float(strength_cv(3 * r["low"]))),
+                "weibull_m": (3 * r["low"], 3 * r["high"]),
+                "table1": {"m_t": m_t_of_cv(TABLE1["cv"])}}
+    m = (weibull_m_of_ratio(r["high"], r["d_small"], r["d_large"]),
+         weibull_m_of_ratio(r["low"], r["d_small"], r["d_large"]))
+    return {"weibull_m": m,
+            "table1": {"strength_ratio": ratio_of_weibull_m(TABLE1["weibull_m"], r["d_small"], r["d_large"])}}
+
+
+def published_moduli(args):
+    placed = []
+    print("calibrate.py moduli: published statistics against Table 1 (cv %g, weibull_m %g) (%s)"
+          % (TABLE1["cv"], TABLE1["weibull_m"], args.data))
+    for r in read_moduli(args.data):
+        p = place_modulus(r)
+        p.update(r)
+        placed.append(p)
+        span = "%g" % r["low"] if r["low"] == r["high"] else "%g - %g" % (r["low"], r["high"])
+        print("%s (%s): %s %s" % (r["source"], r["material"], r["quantity"], span))
+        if r["quantity"] == "m_t":
+            print("  scatter: strengths a Weibull of modulus %s, cv %.3f - %.3f; Table 1's cv %g is m_t %.3g"
+                  % ("%g" % (3 * r["low"]) if r["low"] == r["high"] else "%g - %g" % (3 * r["low"], 3 * r["high"]),
+                     p["cv"][0], p["cv"][1], TABLE1["cv"], p["table1"]["m_t"]))
+            print("  size effect if Weibull's (F/d^2 ~ d^(-3/m_t)): weibull_m %.3g - %.3g (Table 1: %g)"
+                  % (p["weibull_m"][0], p["weibull_m"][1], TABLE1["weibull_m"]))
+        else:
+            print("  size effect over %.3g - %.3g m: weibull_m %.3g - %.3g; Table 1's weibull_m %g is a ratio of %.3g"
+                  % (r["d_small"], r["d_large"], p["weibull_m"][0], p["weibull_m"][1], TABLE1["weibull_m"],
+                     p["table1"]["strength_ratio"]))
+    print("sigma_lim0 is not placed: a modulus carries no strength; find it from a compression curve (oedometer)")
+    os.makedirs(args.out, exist_ok=True)
+    json.dump(placed, open(os.path.join(args.out, "moduli.json"), "w"), indent=1)
+    print("wrote %s/moduli.json" % args.out)
 
 
 # ---------------------------------------------------------------------------------------------
@@ -808,6 +905,11 @@ def parser():
     su.add_argument("--out", default="calibration")
     moduli(su)
     su.set_defaults(run=summary)
+
+    mo = sub.add_parser("moduli", help="published Weibull moduli and size ratios (no strengths) against Table 1")
+    mo.add_argument("data", help="CSV: source, material, quantity (m_t or strength_ratio), low, high, d_small, d_large")
+    mo.add_argument("--out", default="moduli")
+    mo.set_defaults(run=published_moduli)
 
     sy = sub.add_parser("synthetic", help="draw tests from known parameters")
     sy.add_argument("out_csv")

@@ -149,6 +149,49 @@ def case_summary_round_trip(liggghts, work):
     check(rc != 0 and "line 3" in err and "n = 3" in err, "a class of 3 grains is named with its line: " + err.strip())
 
 
+def case_moduli(liggghts, work):
+    """Published moduli without strengths (calibrate.py moduli): the cv of a class's strengths from
+    the failure forces' Weibull modulus, against eq. 5's inversion of drawn forces; the size effect
+    of a strength ratio, against F_lim of fix crush's own size effect at two sizes; Table 1 in the
+    same terms (cv 1 is the exponential: m_t = 1/3); the published file's numbers; bad rows named."""
+    import numpy as np
+    E_eff = calibrate.effective_modulus(*calibrate.DEFAULT_GRAIN, *calibrate.DEFAULT_PLATEN)
+    s = calibrate.strength_from_force(np.random.default_rng(5).weibull(2.0, 1000000) * 30.0, 1e-3, E_eff)
+    cv = float(calibrate.strength_cv(6.0))
+    check(abs(cv / (s.std() / s.mean()) - 1) < 5e-3, "m_t = 2: cv %.4f against the draws' %.4f" % (cv, s.std() / s.mean()))
+    check(abs(calibrate.strength_cv(1.0) - 1.0) < 1e-12 and abs(calibrate.m_t_of_cv(1.0) - 1.0 / 3.0) < 1e-9,
+          "cv 1 is a Weibull of modulus 1 (the exponential): m_t = 1/3")
+    # fix crush's size effect with weibull_m = 10: F_lim at two sizes, then F/d^2's ratio read back
+    d_small, d_large = 0.05e-3, 20e-3
+    F = [calibrate.force_from_strength(5e9 * (d / 2e-3) ** (-0.3), d, E_eff) for d in (d_small, d_large)]
+    ratio = (F[0] / d_small ** 2) / (F[1] / d_large ** 2)
+    check(abs(calibrate.weibull_m_of_ratio(ratio, d_small, d_large) - 10.0) < 1e-9
+          and abs(calibrate.ratio_of_weibull_m(10.0, d_small, d_large) / ratio - 1) < 1e-12,
+          "the F/d^2 ratio %.4g of weibull_m = 10 over %g - %g m reads back as 10" % (ratio, d_small, d_large))
+    published = os.path.join(REPO, "examples", "calibration", "published_moduli.csv")
+    out = os.path.join(work, "moduli")
+    rc, stdout, err = calibrate_cli("moduli", published, "--out", out)
+    check(rc == 0, "moduli reads %s (exit %d) %s" % (published, rc, err))
+    print(stdout)
+    placed = json.load(open(os.path.join(out, "moduli.json")))
+    sato, minerals = placed
+    check(abs(sato["cv"][0] - 0.1938) < 5e-4 and sato["weibull_m"] == [6.0, 6.0],
+          "Sato et al.'s m_t = 2: cv %.4f, weibull_m 6 by Weibull's size effect" % sato["cv"][0])
+    check(abs(minerals["weibull_m"][0] - 13.78) < 0.01 and abs(minerals["weibull_m"][1] - 19.03) < 0.01
+          and abs(minerals["table1"]["strength_ratio"] - 219.7) < 0.1,
+          "strength ratio 17 - 50 over 0.05 - 20 mm: weibull_m %.2f - %.2f; Table 1's m = 10 a ratio of %.1f"
+          % (minerals["weibull_m"][0], minerals["weibull_m"][1], minerals["table1"]["strength_ratio"]))
+    header = "source,material,quantity,low,high,d_small,d_large\n"
+    for name, row, expected in (("quantity", "a,b,m_w,2,2,,", "line 2: quantity = 'm_w'"),
+                                ("sizes", "a,b,strength_ratio,17,50,2e-2,5e-5", "line 2: d_large = 5e-5 must exceed"),
+                                ("ratio", "a,b,strength_ratio,0.5,2,5e-5,2e-2", "line 2: low = 0.5"),
+                                ("range", "a,b,m_t,3,2,,", "line 2: high = 2 is below low = 3")):
+        path = os.path.join(work, "bad_%s.csv" % name)
+        open(path, "w").write(header + row + "\n")
+        rc, _, err = calibrate_cli("moduli", path, "--out", os.path.join(work, "bad"))
+        check(rc != 0 and expected in err, "bad %s refused: %s" % (name, err.strip()))
+
+
 def bad_data(work, name, text):
     path = os.path.join(work, name)
     open(path, "w").write(text)
