@@ -38,6 +38,7 @@ sigma_lim0) is a straight line of log sigma_lim against log d with slope -3/m. E
 the grains in the deck (the DEM checks F against F_lim with the deck's E'), not the mineral's."""
 import argparse
 import csv
+import functools
 import json
 import math
 import os
@@ -877,82 +878,83 @@ def oedometer(args):
 def parser():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     sub = ap.add_subparsers(dest="command_name", required=True)
+    sub.add_parser = functools.partial(sub.add_parser, formatter_class=argparse.ArgumentDefaultsHelpFormatter)
 
     def moduli(p):
         p.add_argument("--grain-E", type=float, default=DEFAULT_GRAIN[0], help="grain Young's modulus (Pa) of the deck")
-        p.add_argument("--grain-nu", type=float, default=DEFAULT_GRAIN[1])
+        p.add_argument("--grain-nu", type=float, default=DEFAULT_GRAIN[1], help="grain Poisson ratio of the deck")
         p.add_argument("--platen-E", type=float, default=DEFAULT_PLATEN[0], help="platen Young's modulus (Pa)")
-        p.add_argument("--platen-nu", type=float, default=DEFAULT_PLATEN[1])
+        p.add_argument("--platen-nu", type=float, default=DEFAULT_PLATEN[1], help="platen Poisson ratio")
 
     sp = sub.add_parser("single-particle", help="fit fix crush's parameters to crushing tests")
-    sp.add_argument("data")
+    sp.add_argument("data", help="CSV: one grain a row, columns d (m), F_f (N); optional E_grain, nu_grain, E_platen, nu_platen, size_class")
     sp.add_argument("--d0", type=float, default=None, help="reference diameter (m; default: the median size)")
     sp.add_argument("--scale", type=float, default=1.0, help="the deck's upscaling factor N (scale keyword)")
     sp.add_argument("--bootstrap", type=int, default=400, help="bootstrap resamples for the intervals")
     sp.add_argument("--seed", type=int, default=2, help="seed of the bootstrap")
     sp.add_argument("--crush-seed", type=int, default=15485863, help="seed written in the fix crush line")
-    sp.add_argument("--out", default="calibration")
+    sp.add_argument("--out", default="calibration", help="folder for parameters.json and the figures")
     moduli(sp)
     sp.set_defaults(run=single_particle)
 
     su = sub.add_parser("summary", help="fix crush's parameters from published summary statistics per size")
-    su.add_argument("data")
+    su.add_argument("data", help="CSV: one size class a row, columns d (m), n, m_t, and F_0 (N) or sigma_0 (Pa)")
     su.add_argument("--d0", type=float, default=None, help="reference diameter (m; default: the classes' geometric mean)")
     su.add_argument("--scale", type=float, default=1.0, help="the deck's upscaling factor N (scale keyword)")
     su.add_argument("--bootstrap", type=int, default=400, help="resamples for the intervals")
-    su.add_argument("--seed", type=int, default=2)
+    su.add_argument("--seed", type=int, default=2, help="seed of the resamples")
     su.add_argument("--crush-seed", type=int, default=15485863, help="seed written in the fix crush line")
-    su.add_argument("--out", default="calibration")
+    su.add_argument("--out", default="calibration", help="folder for parameters.json and the figures")
     moduli(su)
     su.set_defaults(run=summary)
 
     mo = sub.add_parser("moduli", help="published Weibull moduli and size ratios (no strengths) against Table 1")
     mo.add_argument("data", help="CSV: source, material, quantity (m_t or strength_ratio), low, high, d_small, d_large")
-    mo.add_argument("--out", default="moduli")
+    mo.add_argument("--out", default="moduli", help="folder for moduli.json")
     mo.set_defaults(run=published_moduli)
 
     sy = sub.add_parser("synthetic", help="draw tests from known parameters")
-    sy.add_argument("out_csv")
+    sy.add_argument("out_csv", help="the CSV to write (d, F_f)")
     for name in ("--sigma_lim0", "--cv", "--weibull_m", "--d0"):
         sy.add_argument(name, type=float, required=True)
     sy.add_argument("--sizes", required=True, help="diameters (m), comma-separated")
-    sy.add_argument("--per-size", type=int, required=True)
-    sy.add_argument("--seed", type=int, required=True)
-    sy.add_argument("--distribution", choices=("normal", "weibull"), default="normal")
+    sy.add_argument("--per-size", type=int, required=True, help="grains per size class")
+    sy.add_argument("--seed", type=int, required=True, help="seed of the draws")
+    sy.add_argument("--distribution", choices=("normal", "weibull"), default="normal", help="law of the strengths")
     moduli(sy)
     sy.set_defaults(run=synthetic)
 
     po = sub.add_parser("population", help="grains and variables of the DEM check")
     po.add_argument("fit", help="the --out folder of single-particle")
-    po.add_argument("--per-size", type=int, default=30)
-    po.add_argument("--density", type=float, default=2650.0)
-    po.add_argument("--seed", type=int, default=15485863)
+    po.add_argument("--per-size", type=int, default=30, help="grains per size class")
+    po.add_argument("--density", type=float, default=2650.0, help="grain density (kg/m^3)")
+    po.add_argument("--seed", type=int, default=15485863, help="fix crush's seed in the run")
     po.add_argument("--distribution", default=None, help="instead of the fitted line's (e.g. constant)")
-    po.add_argument("--out", default="population")
+    po.add_argument("--out", default="population", help="folder for grains.include and variables.txt")
     po.set_defaults(run=population)
 
     co = sub.add_parser("compare", help="DEM failure forces against the tests")
-    co.add_argument("data")
-    co.add_argument("fit")
+    co.add_argument("data", help="the tests' CSV (as for single-particle)")
+    co.add_argument("fit", help="the --out folder of single-particle")
     co.add_argument("run_dir", help="the folder of the DEM run (population's --out)")
     co.add_argument("--out", default=None, help="default: the run's folder")
     co.set_defaults(run=compare)
 
     oe = sub.add_parser("oedometer", help="O-N runs for a grid of (sigma_lim0, cv) against a lab curve")
     oe.add_argument("lab", help="CSV with columns sigma_v (Pa), e")
-    oe.add_argument("--sigma_lim0", default="2.5e9,5e9,1e10")
-    oe.add_argument("--cv", default="0.5,1")
-    oe.add_argument("--weibull_m", type=float, default=10.0)
-    oe.add_argument("--d0", type=float, default=2e-3)
+    oe.add_argument("--sigma_lim0", default="2.5e9,5e9,1e10", help="candidate values (Pa), comma-separated")
+    oe.add_argument("--cv", default="0.5,1", help="candidate values, comma-separated")
+    oe.add_argument("--weibull_m", type=float, default=10.0, help="size effect modulus of the runs")
+    oe.add_argument("--d0", type=float, default=2e-3, help="reference diameter (m) of the runs")
     oe.add_argument("--from", dest="fit", default=None, help="take weibull_m and d0 from a single-particle fit")
     oe.add_argument("--N", default="2", help="the upscaling factor of the run (O-N)")
-    oe.add_argument("--sigma_max", type=float, default=1e8)
-    oe.add_argument("--ranks", type=int, default=2)
-    oe.add_argument("--liggghts", default=os.path.join(REPO, "build", "liggghts"))
+    oe.add_argument("--sigma_max", type=float, default=1e8, help="largest vertical stress of the runs (Pa)")
+    oe.add_argument("--ranks", type=int, default=2, help="MPI ranks of each run")
+    oe.add_argument("--liggghts", default=os.path.join(REPO, "build", "liggghts"), help="the executable")
     oe.add_argument("--command", default="mpirun -np {ranks} --oversubscribe {liggghts} -in in.oedometer -var N {N} "
                     "-var sigma_lim0 {sigma_lim0} -var sigma_max {sigma_max} -log log.liggghts",
                     help="the run's command line ({liggghts} {ranks} {N} {sigma_lim0} {sigma_max} filled in)")
-    oe.add_argument("--out", default="oedometer")
+    oe.add_argument("--out", default="oedometer", help="folder for the runs, oedometer.json and the figure")
     oe.set_defaults(run=oedometer)
     return ap
 
