@@ -769,14 +769,32 @@ def compare(args):
 # ---------------------------------------------------------------------------------------------
 # oedometer: O-2 (examples/fontainebleau/in.oedometer) for a grid of (sigma_lim0, cv)
 
-def read_curve(path, stress="sigma_v", ratio="e"):
+def finite_number(path, n, row, column):
+    try:
+        value = float(row[column])
+    except ValueError:
+        raise DataError("%s, line %d: %s = '%s' is not a number" % (path, n, column, row[column]))
+    if not math.isfinite(value):
+        raise DataError("%s, line %d: %s = %s must be finite" % (path, n, column, row[column]))
+    return value
+
+
+def read_curve(path, stress="sigma_v", ratio="e", booked=False):
+    """sigma and e of a compression curve. A lab's e is positive; a run's booked e (booked=True) may
+    not be: its removed volume, counted as solid, can outgrow the void space (doc/design.md, 8)."""
     header, rows = data_rows(path)
     for column in (stress, ratio):
         if column not in header:
             raise DataError("%s: no column '%s' in the header (%s)" % (path, column, ",".join(header)))
     s = np.array([positive_number(path, n, r, stress) for n, r in rows])
-    e = np.array([positive_number(path, n, r, ratio) for n, r in rows])
+    e = np.array([(finite_number if booked else positive_number)(path, n, r, ratio) for n, r in rows])
     return s, e
+
+
+def overbooked_at(s, e):
+    """The first stress at which a run's booked void ratio is no longer positive (None if never)."""
+    gone = np.nonzero(e <= 0.0)[0]
+    return float(s[gone[0]]) if len(gone) else None
 
 
 def yield_and_slope(s, e, low, high):
@@ -824,7 +842,7 @@ def run_oedometer(args, sigma_lim0, cv, weibull_m, d0, folder):
     if rc != 0:
         raise DataError("the run in %s failed (exit %d): %s" % (folder, rc, " ".join(cmd)))
     history = os.path.join(folder, "history_O%s.csv" % args.N)
-    s, e = read_curve(history, "sigma_z", "void_ratio")
+    s, e = read_curve(history, "sigma_z", "void_ratio", booked=True)
     return s, e, seconds
 
 
@@ -846,24 +864,34 @@ def oedometer(args):
     for k, (s0, cv) in enumerate(grid):
         s, e, seconds = run_oedometer(args, s0, cv, weibull_m, d0, os.path.join(args.out, "run_%d" % k))
         y, c = yield_and_slope(s, e, low, high)
-        err = math.hypot(math.log(y / y_lab), (c - c_lab) / c_lab) if math.isfinite(y) else math.inf
+        overbooked = overbooked_at(s, e)
+        # a cascade's curve past zero booked porosity is not a result, however well it fits
+        err = math.hypot(math.log(y / y_lab), (c - c_lab) / c_lab) if math.isfinite(y) and overbooked is None else math.inf
         runs.append({"sigma_lim0": s0, "cv": cv, "yield": y, "slope": c, "seconds": seconds, "misfit": err,
-                     "s": s, "e": e})
+                     "overbooked_at": overbooked, "s": s, "e": e})
         print("run %d: sigma_lim0 = %.4g Pa, cv = %g: yield %.4g Pa (lab %.4g), slope %.4g (lab %.4g), misfit %.3g, %.1f s"
               % (k, s0, cv, y, y_lab, c, c_lab, err, seconds))
-    best = min(runs, key=lambda r: r["misfit"])
+        if overbooked is not None:
+            print("run %d: the booked void ratio reaches %.3g (<= 0 from %.4g Pa): the removed volume outgrows "
+                  "the void space (a cascade, doc/design.md section 8); not a candidate" % (k, e.min(), overbooked))
     total = sum(r["seconds"] for r in runs)
     print("search: %d runs, %.1f s in all, %.1f s a run" % (len(runs), total, total / len(runs)))
-    print("best: sigma_lim0 = %.4g Pa, cv = %g (misfit %.3g: |log yield ratio| and relative slope error, "
-          "combined)" % (best["sigma_lim0"], best["cv"], best["misfit"]))
-    json.dump({"lab_yield": y_lab, "lab_slope": c_lab, "best": {k: best[k] for k in ("sigma_lim0", "cv", "yield", "slope")},
-               "runs": [{k: r[k] for k in ("sigma_lim0", "cv", "yield", "slope", "seconds", "misfit")} for r in runs]},
+    candidates = [r for r in runs if math.isfinite(r["misfit"])]
+    best = min(candidates, key=lambda r: r["misfit"]) if candidates else None
+    if best:
+        print("best: sigma_lim0 = %.4g Pa, cv = %g (misfit %.3g: |log yield ratio| and relative slope error, "
+              "combined)" % (best["sigma_lim0"], best["cv"], best["misfit"]))
+    keys = ("sigma_lim0", "cv", "yield", "slope", "seconds", "misfit", "overbooked_at")
+    json.dump({"lab_yield": y_lab, "lab_slope": c_lab,
+               "best": {k: best[k] for k in ("sigma_lim0", "cv", "yield", "slope")} if best else None,
+               "runs": [{k: (r[k] if r[k] != math.inf else None) for k in keys} for r in runs]},
               open(os.path.join(args.out, "oedometer.json"), "w"), indent=1)
     fig, ax = plt.subplots(figsize=(6, 4.2))
     ax.semilogx(s_lab / 1e6, e_lab, "ko", ms=4, label="lab")
     for r in runs:
-        ax.semilogx(r["s"] / 1e6, r["e"], "-", lw=2 if r is best else 0.8,
-                    label="sigma_lim0 %.3g GPa, cv %g" % (r["sigma_lim0"] / 1e9, r["cv"]))
+        ax.semilogx(r["s"] / 1e6, r["e"], "-" if r["overbooked_at"] is None else ":", lw=2 if r is best else 0.8,
+                    label="sigma_lim0 %.3g GPa, cv %g%s" % (r["sigma_lim0"] / 1e9, r["cv"],
+                                                          "" if r["overbooked_at"] is None else " (booked e <= 0)"))
     ax.set_xlabel("sigma_v (MPa)")
     ax.set_ylabel("void ratio e")
     ax.legend(fontsize=7)
@@ -871,6 +899,9 @@ def oedometer(args):
     fig.savefig(os.path.join(args.out, "oedometer.png"), dpi=90)
     plt.close(fig)
     print("wrote %s/oedometer.json, oedometer.png" % args.out)
+    if best is None:
+        raise DataError("no run of the grid is a candidate (each lacks a yield or books more solid than the "
+                        "box holds); widen --sigma_lim0 and --cv")
 
 
 # ---------------------------------------------------------------------------------------------

@@ -234,13 +234,17 @@ def case_yield_and_slope(liggghts, work):
 
 
 # A stand-in for an O-N run: writes the history a run would (sigma_z, void_ratio) for a bilinear
-# curve whose yield stress is 2.6e-3 sigma_lim0 and whose slope is -0.3 - 0.01 cv.
+# curve whose yield stress is 2.6e-3 sigma_lim0 and whose slope is -0.3 - 0.01 cv. With a third
+# argument, the pair (sigma_lim0, cv) named there books past zero porosity: its curve is shifted
+# down by 0.6: the same yield and slope, e > 0 at the start and e < 0 from about 25 MPa.
 FAKE_RUN = """import sys
 import numpy as np
 sigma_lim0, cv, N = float(sys.argv[1]), float(open("in.grains").read().split(" cv ")[1].split()[0]), sys.argv[2]
 y = 2.6e-3 * sigma_lim0
 s = np.geomspace(1e5, 1e8, 80)
 e = np.where(s < y, 0.7 - 0.01 * np.log10(s / 1e5), 0.7 - 0.01 * np.log10(y / 1e5) + (-0.3 - 0.01 * cv) * np.log10(s / y))
+if len(sys.argv) > 3 and [float(v) for v in sys.argv[3].split(",")] == [sigma_lim0, cv]:
+    e = e - 0.6
 with open("history_O%s.csv" % N, "w") as f:
     f.write("step,sigma_z,void_ratio\\n")
     for k, (a, b) in enumerate(zip(s, e)):
@@ -276,6 +280,38 @@ def case_oedometer_search(liggghts, work):
     check(best["sigma_lim0"] == 5e9 and best["cv"] == 1.0, "the best pair is the lab's: %g, %g" % (best["sigma_lim0"], best["cv"]))
     check("search: 6 runs" in stdout and " s a run" in stdout, "the cost of the search is printed")
     check(os.path.exists(os.path.join(out, "oedometer.png")), "the figure is written")
+
+
+def case_oedometer_cascade(liggghts, work):
+    """The search with the lab's own pair (5e9, 1) booking past zero porosity (a cascade): that run is
+    named and left out, the best is another, and a grid of such runs alone is refused."""
+    import numpy as np
+    fake = os.path.join(work, "fake_run.py")
+    open(fake, "w").write(FAKE_RUN)
+    s = np.geomspace(1e5, 1e8, 80)
+    y = 2.6e-3 * 5e9
+    e = np.where(s < y, 0.7 - 0.01 * np.log10(s / 1e5), 0.7 - 0.01 * np.log10(y / 1e5) - 0.31 * np.log10(s / y))
+    lab = os.path.join(work, "lab.csv")
+    with open(lab, "w") as f:
+        f.write("sigma_v,e\n" + "".join("%.17g,%.17g\n" % (a, b) for a, b in zip(s, e)))
+    out = os.path.join(work, "search")
+    command = "%s %s {sigma_lim0} {N} 5e9,1" % (PYTHON, fake)
+    rc, stdout, stderr = calibrate_cli("oedometer", lab, "--sigma_lim0", "2.5e9,5e9", "--cv", "0.5,1",
+                                       "--command", command, "--out", out)
+    print(stdout)
+    check(rc == 0, "the search ran (exit %d) %s" % (rc, stderr[-500:]))
+    result = json.load(open(os.path.join(out, "oedometer.json")))
+    cascade = [r for r in result["runs"] if r["overbooked_at"] is not None]
+    check([(r["sigma_lim0"], r["cv"]) for r in cascade] == [(5e9, 1.0)], "only the pair (5e9, 1) books e <= 0")
+    check(2e7 < cascade[0]["overbooked_at"] < 5e7, "e <= 0 from %.4g Pa (about 25 MPa)" % cascade[0]["overbooked_at"])
+    check(cascade[0]["misfit"] is None and abs(cascade[0]["slope"] + 0.31) < 1e-6,
+          "its curve has the lab's slope but no misfit: it is not a candidate")
+    check("run 3: the booked void ratio reaches" in stdout and "not a candidate" in stdout, "the run is named")
+    best = result["best"]
+    check(best["sigma_lim0"] == 5e9 and best["cv"] == 0.5, "the best is the next pair: %g, %g" % (best["sigma_lim0"], best["cv"]))
+    rc, stdout, stderr = calibrate_cli("oedometer", lab, "--sigma_lim0", "5e9", "--cv", "1",
+                                       "--command", command, "--out", os.path.join(work, "alone"))
+    check(rc != 0 and "no run of the grid is a candidate" in stderr, "a grid of cascades alone is refused: %s" % stderr[-300:])
 
 
 def dem_check(liggghts, work, per_size, distribution=None):

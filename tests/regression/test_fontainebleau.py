@@ -107,6 +107,21 @@ def case_oedometer_short(liggghts, work, ranks=1):
         check("2 by 1 by 1 MPI processor grid" in out, "2 ranks cut x, not the loading axis z")
 
 
+def case_overbooked_warning(liggghts, work):
+    """in.write_gsd's guard, run as the deck runs it: a WARNING line where the booked porosity is <= 0
+    (a cascade's books outgrow the box, doc/design.md section 8), none where it is positive."""
+    guard = [line for line in open(os.path.join(DECKS, "in.write_gsd")) if line.startswith('if "${n} <= 0"')]
+    check(len(guard) == 1, "in.write_gsd has one guard on the booked porosity")
+    folder = os.path.join(work, "deck")
+    os.makedirs(folder, exist_ok=True)
+    for n, warned in ((-0.05, True), (0.0, True), (0.3, False)):
+        deck = os.path.join(folder, "in.guard")
+        open(deck, "w").write("variable n equal %g\nvariable mpa equal 36\n%s" % (n, guard[0]))
+        out = run_deck(liggghts, deck, os.path.join(work, "n%g" % n))
+        message = "WARNING: booked porosity %g at 36 MPa" % n
+        check((message in out) == warned, "porosity %g: %s" % (n, "warned" if warned else "no warning"))
+
+
 @variants(timeout=600)
 def case_isotropic_short(liggghts, work):
     """I-2 up to 3 MPa with the truncated strength draw (a few events): all three hi walls follow the
