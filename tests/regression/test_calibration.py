@@ -252,10 +252,9 @@ with open("history_O%s.csv" % N, "w") as f:
 """
 
 
-def case_oedometer_search(liggghts, work):
-    """post/calibrate.py oedometer over a 3 x 2 grid, each run a stand-in that writes a curve of known
-    yield (2.6e-3 sigma_lim0) and slope (-0.3 - 0.01 cv), against a lab curve of the pair (5e9, 1):
-    every run's yield and slope are read back, the best pair is the lab's, and the cost is reported."""
+def stand_in_search(work):
+    """The stand-in run's script and a lab curve of the pair (5e9, 1) in work: (script, lab CSV, the
+    lab's yield stress)."""
     import numpy as np
     fake = os.path.join(work, "fake_run.py")
     open(fake, "w").write(FAKE_RUN)
@@ -265,6 +264,14 @@ def case_oedometer_search(liggghts, work):
     lab = os.path.join(work, "lab.csv")
     with open(lab, "w") as f:
         f.write("sigma_v,e\n" + "".join("%.17g,%.17g\n" % (a, b) for a, b in zip(s, e)))
+    return fake, lab, y
+
+
+def case_oedometer_search(liggghts, work):
+    """post/calibrate.py oedometer over a 3 x 2 grid, each run a stand-in that writes a curve of known
+    yield (2.6e-3 sigma_lim0) and slope (-0.3 - 0.01 cv), against a lab curve of the pair (5e9, 1):
+    every run's yield and slope are read back, the best pair is the lab's, and the cost is reported."""
+    fake, lab, y = stand_in_search(work)
     out = os.path.join(work, "search")
     rc, stdout, stderr = calibrate_cli("oedometer", lab, "--sigma_lim0", "2.5e9,5e9,1e10", "--cv", "0.5,1",
                                        "--command", "%s %s {sigma_lim0} {N}" % (PYTHON, fake), "--out", out)
@@ -285,15 +292,7 @@ def case_oedometer_search(liggghts, work):
 def case_oedometer_cascade(liggghts, work):
     """The search with the lab's own pair (5e9, 1) booking past zero porosity (a cascade): that run is
     named and left out, the best is another, and a grid of such runs alone is refused."""
-    import numpy as np
-    fake = os.path.join(work, "fake_run.py")
-    open(fake, "w").write(FAKE_RUN)
-    s = np.geomspace(1e5, 1e8, 80)
-    y = 2.6e-3 * 5e9
-    e = np.where(s < y, 0.7 - 0.01 * np.log10(s / 1e5), 0.7 - 0.01 * np.log10(y / 1e5) - 0.31 * np.log10(s / y))
-    lab = os.path.join(work, "lab.csv")
-    with open(lab, "w") as f:
-        f.write("sigma_v,e\n" + "".join("%.17g,%.17g\n" % (a, b) for a, b in zip(s, e)))
+    fake, lab, y = stand_in_search(work)
     out = os.path.join(work, "search")
     command = "%s %s {sigma_lim0} {N} 5e9,1" % (PYTHON, fake)
     rc, stdout, stderr = calibrate_cli("oedometer", lab, "--sigma_lim0", "2.5e9,5e9", "--cv", "0.5,1",
