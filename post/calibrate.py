@@ -38,7 +38,6 @@ sigma_lim0) is a straight line of log sigma_lim against log d with slope -3/m. E
 the grains in the deck (the DEM checks F against F_lim with the deck's E'), not the mineral's."""
 import argparse
 import csv
-import functools
 import json
 import math
 import os
@@ -122,11 +121,15 @@ def data_rows(path):
     return header, rows
 
 
-def positive_number(path, n, row, column):
+def number(path, n, row, column):
     try:
-        value = float(row[column])
+        return float(row[column])
     except ValueError:
         raise DataError("%s, line %d: %s = '%s' is not a number" % (path, n, column, row[column]))
+
+
+def positive_number(path, n, row, column):
+    value = number(path, n, row, column)
     if not math.isfinite(value) or value <= 0.0:
         raise DataError("%s, line %d: %s = %s must be positive and finite" % (path, n, column, row[column]))
     return value
@@ -770,10 +773,7 @@ def compare(args):
 # oedometer: O-2 (examples/fontainebleau/in.oedometer) for a grid of (sigma_lim0, cv)
 
 def finite_number(path, n, row, column):
-    try:
-        value = float(row[column])
-    except ValueError:
-        raise DataError("%s, line %d: %s = '%s' is not a number" % (path, n, column, row[column]))
+    value = number(path, n, row, column)
     if not math.isfinite(value):
         raise DataError("%s, line %d: %s = %s must be finite" % (path, n, column, row[column]))
     return value
@@ -878,7 +878,7 @@ def oedometer(args):
     print("search: %d runs, %.1f s in all, %.1f s a run" % (len(runs), total, total / len(runs)))
     candidates = [r for r in runs if math.isfinite(r["misfit"])]
     best = min(candidates, key=lambda r: r["misfit"]) if candidates else None
-    if best:
+    if best is not None:
         print("best: sigma_lim0 = %.4g Pa, cv = %g (misfit %.3g: |log yield ratio| and relative slope error, "
               "combined)" % (best["sigma_lim0"], best["cv"], best["misfit"]))
     keys = ("sigma_lim0", "cv", "yield", "slope", "seconds", "misfit", "overbooked_at")
@@ -909,7 +909,9 @@ def oedometer(args):
 def parser():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     sub = ap.add_subparsers(dest="command_name", required=True)
-    sub.add_parser = functools.partial(sub.add_parser, formatter_class=argparse.ArgumentDefaultsHelpFormatter)
+
+    def command(name, help):
+        return sub.add_parser(name, help=help, formatter_class=argparse.ArgumentDefaultsHelpFormatter)
 
     def moduli(p):
         p.add_argument("--grain-E", type=float, default=DEFAULT_GRAIN[0], help="grain Young's modulus (Pa) of the deck")
@@ -917,7 +919,7 @@ def parser():
         p.add_argument("--platen-E", type=float, default=DEFAULT_PLATEN[0], help="platen Young's modulus (Pa)")
         p.add_argument("--platen-nu", type=float, default=DEFAULT_PLATEN[1], help="platen Poisson ratio")
 
-    sp = sub.add_parser("single-particle", help="fit fix crush's parameters to crushing tests")
+    sp = command("single-particle", "fit fix crush's parameters to crushing tests")
     sp.add_argument("data", help="CSV: one grain a row, columns d (m), F_f (N); optional E_grain, nu_grain, E_platen, nu_platen, size_class")
     sp.add_argument("--d0", type=float, default=None, help="reference diameter (m; default: the median size)")
     sp.add_argument("--scale", type=float, default=1.0, help="the deck's upscaling factor N (scale keyword)")
@@ -928,7 +930,7 @@ def parser():
     moduli(sp)
     sp.set_defaults(run=single_particle)
 
-    su = sub.add_parser("summary", help="fix crush's parameters from published summary statistics per size")
+    su = command("summary", "fix crush's parameters from published summary statistics per size")
     su.add_argument("data", help="CSV: one size class a row, columns d (m), n, m_t, and F_0 (N) or sigma_0 (Pa)")
     su.add_argument("--d0", type=float, default=None, help="reference diameter (m; default: the classes' geometric mean)")
     su.add_argument("--scale", type=float, default=1.0, help="the deck's upscaling factor N (scale keyword)")
@@ -939,12 +941,12 @@ def parser():
     moduli(su)
     su.set_defaults(run=summary)
 
-    mo = sub.add_parser("moduli", help="published Weibull moduli and size ratios (no strengths) against Table 1")
+    mo = command("moduli", "published Weibull moduli and size ratios (no strengths) against Table 1")
     mo.add_argument("data", help="CSV: source, material, quantity (m_t or strength_ratio), low, high, d_small, d_large")
     mo.add_argument("--out", default="moduli", help="folder for moduli.json")
     mo.set_defaults(run=published_moduli)
 
-    sy = sub.add_parser("synthetic", help="draw tests from known parameters")
+    sy = command("synthetic", "draw tests from known parameters")
     sy.add_argument("out_csv", help="the CSV to write (d, F_f)")
     for name in ("--sigma_lim0", "--cv", "--weibull_m", "--d0"):
         sy.add_argument(name, type=float, required=True)
@@ -955,7 +957,7 @@ def parser():
     moduli(sy)
     sy.set_defaults(run=synthetic)
 
-    po = sub.add_parser("population", help="grains and variables of the DEM check")
+    po = command("population", "grains and variables of the DEM check")
     po.add_argument("fit", help="the --out folder of single-particle")
     po.add_argument("--per-size", type=int, default=30, help="grains per size class")
     po.add_argument("--density", type=float, default=2650.0, help="grain density (kg/m^3)")
@@ -964,14 +966,14 @@ def parser():
     po.add_argument("--out", default="population", help="folder for grains.include and variables.txt")
     po.set_defaults(run=population)
 
-    co = sub.add_parser("compare", help="DEM failure forces against the tests")
+    co = command("compare", "DEM failure forces against the tests")
     co.add_argument("data", help="the tests' CSV (as for single-particle)")
     co.add_argument("fit", help="the --out folder of single-particle")
     co.add_argument("run_dir", help="the folder of the DEM run (population's --out)")
     co.add_argument("--out", default=None, help="default: the run's folder")
     co.set_defaults(run=compare)
 
-    oe = sub.add_parser("oedometer", help="O-N runs for a grid of (sigma_lim0, cv) against a lab curve")
+    oe = command("oedometer", "O-N runs for a grid of (sigma_lim0, cv) against a lab curve")
     oe.add_argument("lab", help="CSV with columns sigma_v (Pa), e")
     oe.add_argument("--sigma_lim0", default="2.5e9,5e9,1e10", help="candidate values (Pa), comma-separated")
     oe.add_argument("--cv", default="0.5,1", help="candidate values, comma-separated")
