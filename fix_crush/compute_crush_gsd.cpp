@@ -8,6 +8,7 @@
 #include <string>
 
 #include "atom.h"
+#include "crush_constants.h"
 #include "crush_grading.h"
 #include "crush_model_error.h"
 #include "error.h"
@@ -57,13 +58,23 @@ void ComputeCrushGsd::init()
   fix_ = static_cast<FixCrush *>(modify->fix[ifix]);
 }
 
+// The grading in sand sizes: each particle downscaled by its own N (fix crush's scale or scale_atom),
+// weighed by its model volume (the volume of sand it stands for).
+crush::Grading ComputeCrushGsd::grading() const
+{
+  return crush::Grading(sieves_, 1.0, fix_->settings().fines_dimension);
+}
+
 // sums = {volume passing each sieve..., volume, volume x size}, added over processors.
 void ComputeCrushGsd::sum_grains(std::vector<double> &sums) const
 {
-  const crush::Grading grading(sieves_, fix_->settings().scale_factor, fix_->settings().fines_dimension);
-  crush::GradingSums local = grading.empty_sums();
+  const crush::Grading sand = grading();
+  crush::GradingSums local = sand.empty_sums();
   for (int i = 0; i < atom->nlocal; i++)
-    if (atom->mask[i] & groupbit) grading.add_grain(2.0 * atom->radius[i], local);
+    if (atom->mask[i] & groupbit) {
+      const double d = 2.0 * atom->radius[i];
+      sand.add_volume(d / fix_->scale_of(i), crush::sphere_volume(d), local);
+    }
   std::vector<double> packed(local.volume_passing);
   packed.push_back(local.volume);
   packed.push_back(local.volume_times_size);
@@ -87,19 +98,16 @@ void ComputeCrushGsd::compute_vector()
   invoked_vector = update->ntimestep;
   std::vector<double> packed;
   sum_grains(packed);
-  const crush::CrushSettings &c = fix_->settings();
-  const crush::Grading grading(sieves_, c.scale_factor, c.fines_dimension);
-  crush::GradingSums sums = grading.empty_sums();
+  const crush::Grading sand = grading();
+  crush::GradingSums sums = sand.empty_sums();
   for (std::size_t k = 0; k < sieves_.size(); k++) sums.volume_passing[k] = packed[k];
   sums.volume = packed[sieves_.size()];
   sums.volume_times_size = packed[sieves_.size() + 1];
-  const double dmax = dmax_ > 0.0 ? dmax_ : fix_->initial_largest_diameter() / c.scale_factor;
+  const double dmax = dmax_ > 0.0 ? dmax_ : fix_->initial_largest_size();
   try {
-    const std::vector<double> passing =
-        grading.percent_passing(sums, fix_->removed_volume(), fix_->smallest_fragment_diameter());
+    const std::vector<double> passing = sand.percent_passing(sums, fix_->removed_volume(), fix_->smallest_fragment_size());
     for (std::size_t k = 0; k < passing.size(); k++) vector[k] = passing[k];
-    vector[sieves_.size()] =
-        grading.grading_index(sums, fix_->removed_volume(), fix_->smallest_fragment_diameter(), dmax);
+    vector[sieves_.size()] = sand.grading_index(sums, fix_->removed_volume(), fix_->smallest_fragment_size(), dmax);
   } catch (const crush::ModelError &e) {
     error->all(FLERR, (std::string("compute crush/gsd: ") + e.what()).c_str());
   }

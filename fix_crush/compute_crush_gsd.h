@@ -5,7 +5,8 @@
 
    compute ID group crush/gsd fix-ID sieves s1 s2 ... [dmax d]
 
-   vector: percent passing by mass at each (downscaled) sieve size, then I_G;
+   vector: percent passing by mass at each (downscaled) sieve size, then I_G; each particle is
+   downscaled by its own N (fix crush's scale, or its scale_atom);
    scalar: solid volume (m^3), particles plus removed volume, for porosity.
 ------------------------------------------------------------------------- */
 #ifdef COMPUTE_CLASS
@@ -21,6 +22,7 @@ ComputeStyle(crush/gsd,ComputeCrushGsd)
 #include <vector>
 
 #include "compute.h"
+#include "crush_grading.h"
 
 namespace LAMMPS_NS {
 
@@ -34,12 +36,13 @@ class ComputeCrushGsd : public Compute {
 
  private:
   void parse_arguments(const std::vector<std::string> &args, std::size_t first);
+  crush::Grading grading() const;
   void sum_grains(std::vector<double> &sums) const;
 
   char *fix_id_;
   class FixCrush *fix_;
   std::vector<double> sieves_;
-  double dmax_;  // m (downscaled) of the limiting grading; 0: the fix's initial largest grain / N
+  double dmax_;  // m (downscaled) of the limiting grading; 0: the fix's initial largest grain's d / N
 };
 
 }  // namespace LAMMPS_NS

@@ -11,7 +11,12 @@ namespace crush {
 
 double CrushSettings::size_scaled(double s, double d) const
 {
-  return size_effect ? size_scaled_strength(s, d, d0, weibull_m, scale_factor) : s;
+  return size_scaled(s, d, scale_factor);
+}
+
+double CrushSettings::size_scaled(double s, double d, double particle_scale) const
+{
+  return size_effect ? size_scaled_strength(s, d, d0, weibull_m, particle_scale) : s;
 }
 
 CrushSettings parse_crush_settings(const std::vector<std::string> &args)
@@ -27,6 +32,7 @@ CrushSettings parse_crush_settings(const std::vector<std::string> &args)
    .number("d0", "a reference diameter in [1e-7, 10] m", in_range(1e-7, 10.0, true), c.d0, true)
    .integer("seed", "a positive integer", 1, seed, true)
    .number("scale", "an upscaling factor N in (0, 1e4]", open_closed(0.0, 1e4), c.scale_factor)
+   .text("scale_atom", "the name of a scalar fix property/atom holding each particle's N", c.scale_atom)
    .number("dmin", "a diameter in [0, 10] m", in_range(0.0, 10.0, true), c.dmin)
    .add("every", "an integer >= 1 or 'adaptive'", [&](const std::vector<std::string> &w, std::size_t at) {
      if (at + 1 < w.size() && w[at + 1] == "adaptive") {

@@ -3,7 +3,7 @@
    fix ID group crush sigma_lim0 5e9 cv 1 weibull_m 10 d0 2e-3 seed 1234567 &
        scale 2 dmin 5e-5 every 1 orientation random distribution normal size_effect yes &
        layout fourteen fines_dimension 2.5 rayleigh_fraction 0.3 log crush_events.csv check_tags no &
-       region tip force elastic fragment_density true redraw no
+       region tip force elastic fragment_density true redraw no scale_atom scale_factor
 
    Required: sigma_lim0 (Pa), cv, weibull_m, d0 (m), seed. Every error names the keyword and the
    expected value (ModelError), for the LIGGGHTS adapter to pass to error->all(). */
@@ -27,6 +27,7 @@ struct CrushSettings {
   double d0 = 0.0;               // m, reference diameter
   std::uint64_t seed = 0;        // strength draws and orientations
   double scale_factor = 1.0;     // N, the upscaling factor (sec. 2.4)
+  std::string scale_atom;        // a fix property/atom holding each particle's own N ("" = none: N everywhere)
   double dmin = 0.0;             // m, comminution limit: smaller particles never break (0: none)
   int every = 1;                 // check for breakage every this many steps
   bool adaptive = false;         // 'every adaptive': check only when a bound says a grain may break
@@ -43,8 +44,10 @@ struct CrushSettings {
   FragmentDensity fragment_density = FragmentDensity::true_density;  // 'scaled': the grain's time step
   bool redraw = false;           // 'redraw yes': the strengths a restart file brings are drawn anew
 
-  // sigma_lim (Pa) of a particle of diameter d (m) with strength draw s (Pa): eq. 10 or s.
+  // sigma_lim (Pa) of a particle of diameter d (m) with strength draw s (Pa): eq. 10 or s, with the
+  // deck's N or the particle's own scale factor (scale_atom).
   double size_scaled(double s, double d) const;
+  double size_scaled(double s, double d, double scale_factor) const;
 };
 
 // Parses the keyword/value list that follows 'fix ID group crush'.

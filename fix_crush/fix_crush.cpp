@@ -80,10 +80,10 @@ FixCrush::FixCrush(LAMMPS *lmp, int narg, char **arg) :
   settings_(parse(this, error, comm->me, narg, arg)),
   strength_(settings_.distribution, settings_.sigma_lim0, settings_.cv, settings_.weibull_m, settings_.seed),
   nfrag_(static_cast<int>(crush::fragment_layout(settings_.layout, 1.0).size())),
-  region_(NULL), fix_data_(NULL), data_id_(NULL), fix_true_density_(NULL), true_density_id_(NULL), limit_factor_(NULL), irregular_(NULL), log_(NULL),
+  region_(NULL), fix_data_(NULL), data_id_(NULL), fix_true_density_(NULL), true_density_id_(NULL), fix_scale_(NULL), limit_factor_(NULL), irregular_(NULL), log_(NULL),
   events_total_(0), removed_volume_(0.0), outflow_volume_(0.0), outflow_particles_(0), outflow_reported_(false),
   max_ratio_(0.0), local_max_ratio_(0.0), max_ratio_step_(-1),
-  smallest_fragment_diameter_(0.0), initial_largest_diameter_(0.0), next_tag_(1), replace_seconds_(0.0),
+  smallest_fragment_size_(0.0), initial_largest_size_(0.0), next_tag_(1), replace_seconds_(0.0),
   particle_count_(0), initialized_(false), refresh_needed_(true), recording_(true), box_reference_{0.0, 0.0, 0.0},
   allowed_displacement_(0.0), force_check_(true), check_now_(true), checked_steps_(0), restart_step_(-1),
   log_opened_(false), redraw_pending_(settings_.redraw)
@@ -191,6 +191,8 @@ void FixCrush::init()
   find_bodies();
   check_bodies();
   find_true_density();
+  find_scale();
+  check_scales();
   find_inherited_state();
   outflow_reported_ = false;
   setup_limit_factors();
@@ -220,7 +222,10 @@ bool FixCrush::may_break(int i) const
 // Group members at or above the comminution limit: the grains that may break somewhere.
 bool FixCrush::breakable(int i) const
 {
-  return (atom->mask[i] & groupbit) && 2.0 * atom->radius[i] >= settings_.dmin;
+  if (!(atom->mask[i] & groupbit)) return false;
+  const double d = 2.0 * atom->radius[i];
+  // dmin is at the deck's N: a particle of its own N_i compares its sand size d / N_i with dmin / N
+  return fix_scale_ ? d * settings_.scale_factor >= settings_.dmin * scale_of(i) : d >= settings_.dmin;
 }
 
 // Before the run's first exchange: a particle of the group without a positive, finite size or density
@@ -351,7 +356,7 @@ void FixCrush::draw_missing_strengths()
     if (data[i][STRENGTH] < 0.0) {
       try {
         data[i][STRENGTH] = settings_.size_scaled(strength_.draw(tag[i], static_cast<int>(data[i][GENERATION])),
-                                                  2.0 * radius[i]);
+                                                  2.0 * radius[i], scale_of(i));
       } catch (const crush::ModelError &e) {
         particle_error(tag[i], radius[i], atom->density[i], "drawing its strength", e);
       }
@@ -382,11 +387,11 @@ void FixCrush::setup_pre_force(int vflag)
   if (redraw_pending_) discard_strengths();
   bigint n = atom->nlocal;
   MPI_Allreduce(&n, &particle_count_, 1, MPI_LMP_BIGINT, MPI_SUM, world);
-  if (initial_largest_diameter_ == 0.0) {
+  if (initial_largest_size_ == 0.0) {
     double dmax = 0.0;
     for (int i = 0; i < atom->nlocal; i++)
-      if (atom->mask[i] & groupbit) dmax = std::max(dmax, 2.0 * atom->radius[i]);
-    MPI_Allreduce(&dmax, &initial_largest_diameter_, 1, MPI_DOUBLE, MPI_MAX, world);
+      if (atom->mask[i] & groupbit) dmax = std::max(dmax, 2.0 * atom->radius[i] / scale_of(i));
+    MPI_Allreduce(&dmax, &initial_largest_size_, 1, MPI_DOUBLE, MPI_MAX, world);
   }
   pre_force(vflag);
 }
@@ -402,6 +407,7 @@ void FixCrush::pre_force(int)
   if (renumbered) {
     refresh_recorder();
     fill_true_densities();
+    check_scales();
     draw_missing_strengths();
     update_strength_terms();
     if (settings_.adaptive) update_ratio_growth();
@@ -549,11 +555,12 @@ void FixCrush::log_events(const std::vector<Event> &events, tagint first_new_tag
   fflush(log_);
 }
 
-// The smallest particle that can exist: the smallest fragment of a grain just at dmin, or a smaller
-// particle already present.
+// The smallest particle that can exist: the smallest fragment of a grain just at dmin (for the
+// smallest N present: dmin N_i / N), or a smaller particle already present.
 double FixCrush::smallest_possible_radius() const
 {
-  return std::min(smallest_radius(), crush::smallest_fragment_ratio(settings_.layout) * 0.5 * settings_.dmin);
+  const double dmin = fix_scale_ ? settings_.dmin * smallest_scale() / settings_.scale_factor : settings_.dmin;
+  return std::min(smallest_radius(), crush::smallest_fragment_ratio(settings_.layout) * 0.5 * dmin);
 }
 
 // The smallest particle radius on all processors (1e300 without particles).
@@ -641,14 +648,15 @@ double FixCrush::compute_vector(int n)
 namespace {
 // The section starts with a name and a version: a file of another layout is refused by name.
 const char kRestartName[8] = "crush";
-const int kRestartVersion = 3;  // 3: with the outflow
+const int kRestartVersion = 4;  // 3: with the outflow; 4: the sizes downscaled (d / N)
+const int kRestartVersionModelSizes = 3;  // read too: its two sizes are model diameters at the deck's N
 struct RestartHead {
   char name[8];
   int version;
 };
 struct RestartState {
   bigint events_total, npending, checked_steps;
-  double removed_volume, smallest_fragment_diameter, initial_largest_diameter;
+  double removed_volume, smallest_fragment_size, initial_largest_size;
   tagint next_tag;
   std::uint64_t seed;
 };
@@ -661,7 +669,7 @@ struct RestartOutflow {  // version 3
 void FixCrush::write_restart(FILE *fp)
 {
   const RestartState state = {events_total_, static_cast<bigint>(pending_.size()), checked_steps_, removed_volume_,
-                              smallest_fragment_diameter_, initial_largest_diameter_, next_tag_, settings_.seed};
+                              smallest_fragment_size_, initial_largest_size_, next_tag_, settings_.seed};
   RestartHead head = {{0}, kRestartVersion};
   std::memcpy(head.name, kRestartName, sizeof(kRestartName));
   if (comm->me == 0) {
@@ -683,10 +691,10 @@ void FixCrush::restart(char *buf)
   if (std::memcmp(head.name, kRestartName, sizeof(kRestartName)) != 0) {
     error->fix_error(FLERR, this, "the restart file's fix crush section has no version: it was written by an "
                                   "older liggghts-crush, or is not a fix crush section");
-  } else if (head.version != kRestartVersion) {
+  } else if (head.version != kRestartVersion && head.version != kRestartVersionModelSizes) {
     char msg[256];
-    snprintf(msg, sizeof(msg), "the restart file's fix crush section is version %d; this build reads version %d",
-             head.version, kRestartVersion);
+    snprintf(msg, sizeof(msg), "the restart file's fix crush section is version %d; this build reads versions %d "
+             "and %d", head.version, kRestartVersionModelSizes, kRestartVersion);
     error->fix_error(FLERR, this, msg);
   }
   buf += sizeof(RestartHead);
@@ -696,8 +704,9 @@ void FixCrush::restart(char *buf)
   events_total_ = state.events_total;
   checked_steps_ = state.checked_steps;
   removed_volume_ = state.removed_volume;
-  smallest_fragment_diameter_ = state.smallest_fragment_diameter;
-  initial_largest_diameter_ = state.initial_largest_diameter;
+  const double downscale = head.version == kRestartVersionModelSizes ? settings_.scale_factor : 1.0;
+  smallest_fragment_size_ = state.smallest_fragment_size / downscale;
+  initial_largest_size_ = state.initial_largest_size / downscale;
   next_tag_ = state.next_tag;
   if (state.seed != settings_.seed && comm->me == 0)
     error->warning(FLERR, "fix crush: the restart file was written with another 'seed'");

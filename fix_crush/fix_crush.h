@@ -9,7 +9,9 @@
    strengths never depend on the decomposition), logs them, and schedules a reneighboring;
    pre_exchange() of the next step replaces each by its fragments (fix_crush_replacement.cpp: the
    fragments, what they inherit from their mother, the books), and counts the grains that leave a
-   fixed box (fix_crush_outflow.cpp: 'thermo_modify lost').
+   fixed box (fix_crush_outflow.cpp: 'thermo_modify lost'). With 'scale_atom' each particle carries
+   its own upscaling factor N (fix_crush_scale.cpp): eq. 10, the comminution limit and the grading
+   read it per particle.
    The physics (limit, strengths, layout, grading) is in the plain crush_*.h files.
 ------------------------------------------------------------------------- */
 #ifdef FIX_CLASS
@@ -59,8 +61,11 @@ class FixCrush : public Fix {
   const crush::CrushSettings &settings() const { return settings_; }
   double removed_volume() const { return removed_volume_; }
   double outflow_volume() const { return outflow_volume_; }
-  double smallest_fragment_diameter() const { return smallest_fragment_diameter_; }
-  double initial_largest_diameter() const { return initial_largest_diameter_; }
+  // Downscaled sizes (d / N, m): the sand's, whatever N each particle has.
+  double smallest_fragment_size() const { return smallest_fragment_size_; }
+  double initial_largest_size() const { return initial_largest_size_; }
+  // N of local particle i: its own (scale_atom) or the deck's (scale).
+  double scale_of(int i) const;
 
  private:
   // One breakage: the mother's data as agreed by all processors.
@@ -131,6 +136,10 @@ class FixCrush : public Fix {
   double true_mass() const;
   double largest_density_scale() const;
   double smallest_rayleigh_product() const;
+  // 'scale_atom': each particle's own N (fix_crush_scale.cpp)
+  void find_scale();
+  void check_scales() const;
+  double smallest_scale() const;
 
   crush::CrushSettings settings_;
   crush::StrengthDraw strength_;
@@ -142,6 +151,7 @@ class FixCrush : public Fix {
   char *data_id_;
   class FixPropertyAtom *fix_true_density_;  // fragment_density scaled: per atom, its true density
   char *true_density_id_;
+  class FixPropertyAtom *fix_scale_;  // 'scale_atom': the user's per-atom N (NULL: the deck's N)
   ContactLoadRecorder recorder_;
   double **limit_factor_;        // per type pair: (4 E'/3)^2
   std::vector<double> load_;         // per local and ghost atom: largest F_n (4 E'/3)^2 / r'^2 this step
@@ -171,8 +181,8 @@ class FixCrush : public Fix {
   double max_ratio_;                 // over all processors, at step max_ratio_step_
   double local_max_ratio_;           // this processor's, at the last end_of_step
   bigint max_ratio_step_;
-  double smallest_fragment_diameter_;
-  double initial_largest_diameter_;
+  double smallest_fragment_size_;    // the smallest fragment made so far, d / N (m): the fines' largest size
+  double initial_largest_size_;      // the largest particle at the first setup, d / N (m): I_G's d_max
   tagint next_tag_;                  // the first tag never given out
   double replace_seconds_;           // wall time spent in replace_mothers(), for the event cost
   bigint particle_count_;            // particles at the last check: losses stop the run

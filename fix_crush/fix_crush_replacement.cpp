@@ -149,9 +149,10 @@ void FixCrush::replace_mothers()
     const std::size_t k = event.first;
     const int i = event.second;
     mothers.push_back(i);
-    removed_local += create_fragments(i, first + nfrag_ * static_cast<tagint>(k), pending_[k].generation + 1);
-    const double d = crush::smallest_fragment_ratio(settings_.layout) * pending_[k].diameter;
+    // the smallest fragment's sand size, d / N with the mother's N (read before she is replaced)
+    const double d = crush::smallest_fragment_ratio(settings_.layout) * pending_[k].diameter / scale_of(i);
     smallest = smallest == 0.0 ? d : std::min(smallest, d);
+    removed_local += create_fragments(i, first + nfrag_ * static_cast<tagint>(k), pending_[k].generation + 1);
   }
   delete_mothers(mothers);
 
@@ -165,8 +166,7 @@ void FixCrush::replace_mothers()
   double smallest_all = 0.0, big = smallest > 0.0 ? smallest : 1e300;
   MPI_Allreduce(&big, &smallest_all, 1, MPI_DOUBLE, MPI_MIN, world);
   if (smallest_all < 1e300)
-    smallest_fragment_diameter_ = smallest_fragment_diameter_ == 0.0 ? smallest_all
-                                                                    : std::min(smallest_fragment_diameter_, smallest_all);
+    smallest_fragment_size_ = smallest_fragment_size_ == 0.0 ? smallest_all : std::min(smallest_fragment_size_, smallest_all);
   events_total_ += static_cast<bigint>(pending_.size());
   particle_count_ += static_cast<bigint>(nfrag_ - 1) * static_cast<bigint>(pending_.size());
   check_books(sums[1], sums[2]);
@@ -289,7 +289,8 @@ double FixCrush::create_fragments(int mother, tagint first_tag, int generation)
     if (fix_true_density_) fix_true_density_->vector_atom[n] = rho_true;
     double *data = fix_data_->array_atom[n];
     try {
-      data[STRENGTH] = settings_.size_scaled(strength_.draw(atom->tag[n], generation), 2.0 * r);
+      // N is the mother's, copied by inherit_state() above
+      data[STRENGTH] = settings_.size_scaled(strength_.draw(atom->tag[n], generation), 2.0 * r, scale_of(n));
     } catch (const crush::ModelError &e) {
       particle_error(atom->tag[n], r, density, "drawing the strength of this fragment", e);
     }

@@ -2,7 +2,7 @@
 """Bursts: many grains breaking in one step, on periodic and processor boundaries, on any number of
 ranks, and a restart written with the replacement still pending (tests/regression/burst/).
 
-  python3 test_burst.py LIGGGHTS WORKDIR CASE RANKS     CASE: all, half, restart, inherit or density
+  python3 test_burst.py LIGGGHTS WORKDIR CASE RANKS     CASE: all, half, restart, inherit, density or scale
   python3 test_burst.py --list
 
 Every case asserts: every tag unique, particles = initial + 13 x events at every thermo row, the
@@ -73,7 +73,8 @@ def run_burst(liggghts, deck, work, case, ranks, extra=None):
 def check_run(work, case, ranks, types, thermo_from_restart=False):
     """The invariants of a finished burst run in work."""
     n0 = CELLS ** 3
-    thermo = read_thermo(os.path.join(work, "log.liggghts"))
+    # (the rows of fix crush's runs: in.burst_scale runs once before fix crush exists)
+    thermo = [row for row in read_thermo(os.path.join(work, "log.liggghts")) if "crush[1]" in row]
     v0 = n0 * math.pi / 6 * DIAMETER ** 3
     for row in thermo:
         if any(v != v for v in row.values()):
@@ -208,6 +209,56 @@ def case_density(liggghts, work, ranks):
         a["id"] == b["id"] and a["density"] == b["density"] and max(abs(a[k] - b[k]) for k in "xyz") < 1e-9
         for a, b in zip(final, final2))
     check(same, "the continued run ends with the same %d particles and densities" % len(final))
+
+
+SAND_SIEVES = [0.02e-3, 0.03e-3, 0.045e-3, 0.05e-3, 0.06e-3, 0.09e-3]  # between the fragments' sand sizes
+# the small fragments' diameter over their mother's (layout fourteen: tangent to the six large ones)
+SMALLEST_FRAGMENT = 1 - (2 - (2 - math.sqrt(2)) ** 2) / (2 * math.sqrt(2) - 2 * (2 - math.sqrt(2)) / math.sqrt(3))
+
+
+def check_scales(work, log, final, types, ranks):
+    """scale_atom (in.burst_scale): each fragment holds its mother's N (1 for type 1, 2 for type 2), and
+    compute crush/gsd's passing and I_G are those of the sand sizes d / N_i, weighed by model volume,
+    with the removed volume as fractal fines below the smallest fragment's sand size."""
+    scale = {1: 1.0, 2: 2.0}
+    mother = {int(e["fragment_%d" % (f + 1)]): int(e["tag"]) for e in log for f in range(FRAGMENTS)}
+    wrong = [r["id"] for r in final if r["f_grain_scale"] != scale[types[mother[int(r["id"])]]]]
+    check(not wrong, "on %d rank(s) each of the %d fragments holds its mother's N (%d wrong)"
+          % (ranks, len(final), len(wrong)))
+    row = read_thermo(os.path.join(work, "log.liggghts"))[-1]
+    removed = row["crush[2]"]
+    volumes = [(2 * r["radius"] / r["f_grain_scale"], math.pi / 6 * (2 * r["radius"]) ** 3) for r in final]
+    total = sum(v for _, v in volumes) + removed
+    d_f = SMALLEST_FRAGMENT * DIAMETER / 2.0  # the smallest fragment of an N = 2 grain
+    for k, sieve in enumerate(SAND_SIEVES):
+        expected = 100 * (sum(v for d, v in volumes if d < sieve) + removed * min(1.0, (sieve / d_f) ** 0.5)) / total
+        check(abs(row["sand[%d]" % (k + 1)] - expected) < 1e-9,
+              "passing %.3f mm %.9f%% = the sand sizes' %.9f%%" % (sieve * 1e3, row["sand[%d]" % (k + 1)], expected))
+    d_max = DIAMETER  # the largest sand size at the start: an N = 1 grain
+    area = d_max * sum(v for _, v in volumes) - sum(d * v for d, v in volumes) + removed * (d_f / 1.5 + d_max - d_f)
+    i_g = area / total / (d_max / 1.5)
+    check(abs(row["sand[7]"] - i_g) < 1e-9, "I_G %.9f against d_max = the largest grain's sand size: %.9f"
+          % (row["sand[7]"], i_g))
+
+
+@variants(*each_rank_count(1, 2, 3, 4), timeout=600)
+def case_scale(liggghts, work, ranks):
+    """A burst in a box of two scale factors (scale_atom, in.burst_scale): every grain breaks in the
+    first step; books, tags and fragment tags as every burst; fragments keep their mother's N; the
+    grading in sand sizes; continued from the restart written with the replacement pending, the same."""
+    ranks = int(ranks)
+    first = os.path.join(work, "uninterrupted")
+    types = run_burst(liggghts, "in.burst_scale", first, "all", ranks)
+    log, final = check_run(first, "all", ranks, types)
+    check_scales(first, log, final, types, ranks)
+    second = os.path.join(work, "continued")
+    run_burst(liggghts, "in.burst_scale_restart", second, "all", ranks, [os.path.join(first, "burst.restart")])
+    log2, final2 = check_run(second, "all", ranks, types)
+    check_scales(second, log2, final2, types, ranks)
+    same = len(final) == len(final2) and all(
+        a["id"] == b["id"] and a["f_grain_scale"] == b["f_grain_scale"] and max(abs(a[k] - b[k]) for k in "xyz") < 1e-9
+        for a, b in zip(final, final2))
+    check(same, "the continued run ends with the same %d particles and N" % len(final))
 
 
 if __name__ == "__main__":

@@ -142,6 +142,59 @@ def case_single_grain_ranks(liggghts, work):
         check(same, "%d ranks: same step, tag, generation and fragment tags as 1 rank" % ranks)
 
 
+def case_two_scales(liggghts, work):
+    """Two grains with their own N (scale_atom: d 0.2 mm at N 1, d 0.4 mm at N 4) on a plane: each
+    strength is eq. 10 with its own N, each grain breaks at the first step its wall force reaches its
+    own analytic F_lim (F_n / F_lim read back against the wall force to 1e-6), its fragments keep its
+    N, and the grading downscales each particle by its own N."""
+    out = run_deck(liggghts, os.path.join(CRUSH, "in.two_scales"), work)
+    e_eff = 1.0 / ((1 - 0.09) / 7.8e9 + (1 - 0.29 ** 2) / 210e9)
+    radius = {1: 1e-4, 2: 2e-4}
+    scale = {1: 1.0, 2: 4.0}
+    sigma = {t: 1e8 * (2 * radius[t] / (scale[t] * 2e-4)) ** -0.3 for t in (1, 2)}
+    f_lim = {t: (sigma[t] * math.pi) ** 3 * (3 * radius[t] / (4 * e_eff)) ** 2 for t in (1, 2)}
+    check(all(abs(printed(out, "F_LIM%d" % t) / f_lim[t] - 1) < 1e-12 for t in (1, 2)),
+          "F_lim %.6g N (N = 1) and %.6g N (N = 4), %.3f times: the N of grain 2 alone makes it stronger"
+          % (f_lim[1], f_lim[2], f_lim[2] / f_lim[1]))
+    drawn = {int(r["id"]): r for r in read_dump(os.path.join(work, "strengths.dump"))[0][2]}
+    check(all(abs(drawn[t]["f_crush[1]"] / sigma[t] - 1) < 1e-12 and drawn[t]["f_grain_scale"] == scale[t]
+              for t in (1, 2)), "each grain's sigma_lim is eq. 10 with its own N: %.6g and %.6g Pa"
+          % (drawn[1]["f_crush[1]"], drawn[2]["f_crush[1]"]))
+    events = {int(e["tag"]): e for e in read_events(os.path.join(work, "crush_events.csv"))}
+    check(sorted(events) == [1, 2], "both grains break, once each")
+    window = {snap[0]: {int(r["id"]): r for r in snap[2]} for snap in read_dump(os.path.join(work, "window.dump"))}
+    for t in (1, 2):
+        step = int(events[t]["step"])
+        at, before = window[step][t], window[step - 1][t]
+        check(before["f_crush[3]"] < 1.0 <= at["f_crush[3]"],
+              "grain %d breaks at step %d, the first at which F_n / F_lim reaches 1 (%.8f, then %.8f)"
+              % (t, step, before["f_crush[3]"], at["f_crush[3]"]))
+        for row in (before, at):
+            wall = row["f_force_floor[3]"]
+            check(abs(row["f_crush[3]"] * f_lim[t] / wall - 1) < 1e-6,
+                  "grain %d: F_n / F_lim x its analytic F_lim = its wall force %.9g N (%.1e)"
+                  % (t, wall, row["f_crush[3]"] * f_lim[t] / wall - 1))
+    final = read_dump(os.path.join(work, "final.dump"))[-1][2]
+    check(len(final) == 28 and all(r["f_crush[2]"] == 1 for r in final), "28 first-generation fragments")
+    mother = {int(events[t]["fragment_%d" % (f + 1)]): t for t in (1, 2) for f in range(14)}
+    check(all(r["f_grain_scale"] == scale[mother[int(r["id"])]] for r in final),
+          "each fragment keeps its mother's N (1 or 4)")
+    # the grading in sand sizes: d / N_i, by model volume; the removed volume as fines (D = 2.5) below the
+    # smallest fragment's sand size, 0.2300932 x min(0.2 / 1, 0.4 / 4) mm
+    sieves = [0.02e-3, 0.05e-3, 0.1e-3, 0.15e-3, 0.25e-3]
+    thermo = read_thermo(os.path.join(work, "log.liggghts"))[-1]
+    removed = thermo["crush[2]"]
+    volume = sum(math.pi / 6 * (2 * r["radius"]) ** 3 for r in final)
+    a, s1 = 2 - math.sqrt(2), math.sqrt(2)
+    d_f = (1 - (s1 * s1 - a * a) / (2 * s1 - 2 * a / math.sqrt(3))) * 1e-4  # the small fragment of grain 2, / N
+    for k, s in enumerate(sieves):
+        passing = sum(math.pi / 6 * (2 * r["radius"]) ** 3 for r in final if 2 * r["radius"] / r["f_grain_scale"] < s)
+        fines = removed * min(1.0, (s / d_f) ** 0.5)
+        expected = 100 * (passing + fines) / (volume + removed)
+        check(abs(thermo["gsd[%d]" % (k + 1)] - expected) < 1e-6,
+              "passing %.2f mm: %.6f%% (sand sizes d / N_i)" % (s * 1e3, thermo["gsd[%d]" % (k + 1)]))
+
+
 def compression(liggghts, work, ranks):
     run_deck(liggghts, os.path.join(CRUSH, "in.compression"), work, {"log": "events.csv", "out": "final.dump"},
              ranks=ranks)

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -76,6 +77,26 @@ TEST(CrushSettings, SizeScaledUsesEq10WithN)
   const CrushSettings c = parse_crush_settings(with({"scale", "2"}));
   // d = N d0: no correction.
   EXPECT_DOUBLE_EQ(c.size_scaled(5e9, 4e-3), 5e9);
+}
+
+// Eq. 10 per grain ('scale_atom'): sigma_lim = s (d/(N_i d0))^(-3/m) with each particle's own N_i,
+// whatever the deck's N; the deck's N is the per-grain form at N_i = N.
+TEST(CrushSettings, SizeScaledPerGrain)
+{
+  const CrushSettings c = parse_crush_settings(with({"scale", "80", "scale_atom", "grain_scale"}));
+  EXPECT_EQ(c.scale_atom, "grain_scale");
+  const double s = 5e9, d0 = 2e-3, m = 10.0;
+  for (double n : {17.0, 34.0, 80.0})
+    for (double d : {1e-3, 7e-3, 2.1e-2})
+      EXPECT_NEAR(c.size_scaled(s, d, n), s * std::pow(d / (n * d0), -3.0 / m), 1e-12 * s) << "N " << n << " d " << d;
+  EXPECT_EQ(c.size_scaled(s, 5e-3, 80.0), c.size_scaled(s, 5e-3));
+  // Two model grains that stand for the same sand grain (d / N equal) have the same strength...
+  EXPECT_NEAR(c.size_scaled(s, 17 * 0.21e-3, 17.0), c.size_scaled(s, 80 * 0.21e-3, 80.0), 1e-12 * s);
+  // ...and a grain of the fine zone (N = 17) is weaker than the same model size at N = 80 by (80/17)^(-3/m).
+  EXPECT_NEAR(c.size_scaled(s, 5e-3, 17.0) / c.size_scaled(s, 5e-3, 80.0), std::pow(80.0 / 17.0, -0.3), 1e-12);
+  // size_effect no: sigma_lim = s for every N.
+  const CrushSettings flat = parse_crush_settings(with({"size_effect", "no", "scale_atom", "grain_scale"}));
+  EXPECT_EQ(flat.size_scaled(s, 5e-3, 17.0), s);
 }
 
 TEST(CrushSettings, ErrorsNameTheKeywordAndTheExpectedValue)
