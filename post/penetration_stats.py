@@ -1,21 +1,33 @@
 #!/usr/bin/python3
 """The seeds of a penetration study gathered: per setting (every column of scripts/penetration_study.sh's
-study.csv but the case's name and its seed), the number of seeds, the mean of q_c with its sd and
+study.csv that defines a case: all but the case's name, its seed and what the run measured; tip_shape,
+sigma_lim0, neighbor_style and extra, the case's other in.cone / in.chamber variables, tell the pile
+from the cone and the weak sand from Table 1's), the number of seeds, the mean of q_c with its sd and
 standard error, and the means of the events, the inertial numbers, the kinetic energy's share, the
 steps and the time; then, for --vary FIELD, the change of q_c between settings that differ in FIELD
 alone (a numeric field's values in turn; a named field's against its first value: crushing 0,
-dense), with its standard error, and whether it is resolved at 2 standard errors; where both ran
-the same seeds, the change paired by seed too (each seed's own difference, free of the chambers'
-scatter).
+dense, cone), with its standard error, and whether it is resolved at 2 standard errors; where both
+ran the same seeds, the change paired by seed too (each seed's own difference, free of the chambers'
+scatter); for --fit-log2 FIELD, the slope of q_c against log2 FIELD over all the runs of the
+settings that differ in FIELD alone, one intercept per seed (ordinary least squares), with its
+standard error; --members lists the cases of each setting.
 
-    post/penetration_stats.py study.csv [more.csv ...] [--vary v] [--vary crushing] [--markdown]
+    post/penetration_stats.py study.csv [more.csv ...] [--vary v] [--vary crushing] [--fit-log2 v]
+                              [--members] [--markdown]
+
+Rows without a defining column (an older study.csv) take in.cone's default for it (DEFAULTS). Two
+rows of one setting and one seed are one run (a case run under two names): the first is kept, and
+a warning names them where their q_c differ, the sign of a column that should tell them apart.
 """
 import argparse
 import csv
 import math
 import sys
 
-SETTING = ["density", "N", "crushing", "v", "width", "ranks", "distribution", "sigma_v", "fragment_density", "depth"]
+SETTING = ["density", "N", "crushing", "v", "width", "ranks", "distribution", "sigma_v", "fragment_density", "depth",
+           "tip_shape", "sigma_lim0", "neighbor_style", "extra"]
+# in.cone's defaults (sigma_lim0: in.grains', Table 1), for rows of CSVs written before these columns
+DEFAULTS = {"tip_shape": "cone", "sigma_lim0": "5e9", "neighbor_style": "multi", "extra": ""}
 MEANS = ["q_c_MPa", "events", "events_loaded", "I_tip", "I_chamber", "ke_share", "steps", "seconds", "particles", "grains",
          "I_G_near", "I_G_near0", "chamber_events"]
 
@@ -31,19 +43,38 @@ def statistics(values):
 def number(text):
     try:
         return float(text)
-    except ValueError:
+    except (TypeError, ValueError):
         return float("nan")
 
 
-def groups(rows):
-    """{setting tuple: [rows]} in the order the settings first appear, one row per seed (a case run
-    twice under two names, e.g. rate_v0.5_s1 and dense_region_s1, is one run: the first is kept)."""
+def setting_of(row):
+    return tuple(row.get(k) or DEFAULTS.get(k, "") for k in SETTING)
+
+
+def all_groups(rows):
+    """{setting tuple: [every row of it]} in the order the settings first appear."""
     out = {}
     for row in rows:
-        members = out.setdefault(tuple(row.get(k, "") for k in SETTING), [])
-        if all(r["seed"] != row["seed"] for r in members):
-            members.append(row)
+        out.setdefault(setting_of(row), []).append(row)
     return out
+
+
+def one_per_seed(members):
+    """The first row of each seed (a case run twice under two names, e.g. rate_v0.5_s1 and
+    dense_region_s1, is one run); warns where the rows of a seed differ in q_c: not one run."""
+    kept = {}
+    for row in members:
+        first = kept.setdefault(row["seed"], row)
+        if first is not row and first["q_c_MPa"] != row["q_c_MPa"]:
+            sys.stderr.write("penetration_stats.py: warning: %s and %s share every setting and seed %s but not q_c"
+                             " (%s against %s MPa): %s is kept; is a column that tells them apart missing?\n"
+                             % (first["case"], row["case"], row["seed"], first["q_c_MPa"], row["q_c_MPa"], first["case"]))
+    return list(kept.values())
+
+
+def groups(rows):
+    """{setting tuple: [rows]}, one row per seed."""
+    return dict((setting, one_per_seed(members)) for setting, members in all_groups(rows).items())
 
 
 def summarise(rows):
@@ -65,8 +96,92 @@ def paired_change(first, second):
     return statistics([b[seed] - a[seed] for seed in common]) if len(common) > 1 else None
 
 
+def fit_log2(points):
+    """(runs, seeds, slope, se) of y = a_seed + slope log2 x over (seed, x, y) points, ordinary least
+    squares with one intercept per seed: within each seed x and y less their means, the slope their
+    regression through the origin; the residuals' variance over runs - seeds - 1 degrees of freedom.
+    None where no seed ran two values of x."""
+    by_seed = {}
+    for seed, x, y in points:
+        by_seed.setdefault(seed, []).append((math.log2(x), y))
+    centred = []
+    for values in by_seed.values():
+        mx, my = (sum(v[k] for v in values) / len(values) for k in (0, 1))
+        centred += [(x - mx, y - my) for x, y in values]
+    sxx = sum(x * x for x, _ in centred)
+    if sxx == 0:
+        return None
+    slope = sum(x * y for x, y in centred) / sxx
+    dof = len(centred) - len(by_seed) - 1
+    rss = sum((y - slope * x) ** 2 for x, y in centred)
+    return len(centred), len(by_seed), slope, math.sqrt(rss / dof / sxx) if dof > 0 else float("nan")
+
+
 def label(setting, skip=()):
-    return " ".join("%s=%s" % (k, v) for k, v in zip(SETTING, setting) if k not in skip)
+    return " ".join("%s=%s" % (k, v) for k, v in zip(SETTING, setting) if k not in skip and (k != "extra" or v))
+
+
+def families(table, field):
+    """[(settings)] of the table that differ in field alone, two or more of them, field's value sorted:
+    numbers in order, names after them in alphabetical order."""
+    at = SETTING.index(field)
+    others = {}
+    for setting in table:
+        others.setdefault(setting[:at] + setting[at + 1:], []).append(setting)
+    key = lambda m: (0, number(m[at]), "") if math.isfinite(number(m[at])) else (1, 0.0, m[at])  # noqa: E731
+    return [sorted(members, key=key) for members in others.values() if len(members) > 1]
+
+
+def print_table(table, markdown):
+    sep = " | " if markdown else "  "
+    head = ["setting", "seeds", "q_c (MPa)", "sd", "se", "events", "loaded", "I tip", "I chamber", "KE / work",
+            "steps", "time (s)"]
+    print(("| " if markdown else "") + sep.join(head) + (" |" if markdown else ""))
+    if markdown:
+        print("|" + "---|" * len(head))
+    for setting, s in table.items():
+        cells = [label(setting), "%d" % s["q_c_MPa"][0], "%.2f" % s["q_c_MPa"][1], "%.2f" % s["q_c_MPa"][2],
+                 "%.2f" % s["q_c_MPa"][3], "%.0f" % s["events"][1], "%.0f" % s["events_loaded"][1],
+                 "%.2g" % s["I_tip"][1], "%.2g" % s["I_chamber"][1], "%.2g" % s["ke_share"][1],
+                 "%.0f" % s["steps"][1], "%.0f" % s["seconds"][1]]
+        print(("| " if markdown else "") + sep.join(cells) + (" |" if markdown else ""))
+
+
+def print_changes(table, seeded, field):
+    at = SETTING.index(field)
+    print("\nq_c against %s (the others fixed): change, its standard error, resolved at 2 se" % field)
+    for members in families(table, field):
+        numeric = all(math.isfinite(number(m[at])) for m in members)
+        # a numeric field (v, sigma_v): each value against the next; a named one (crushing,
+        # density, tip_shape): each against the first (crushing 0, dense, cone)
+        for x, y in (zip(members, members[1:]) if numeric else ((members[0], m) for m in members[1:])):
+            (nx, mx, _, ex), (ny, my, _, ey) = table[x]["q_c_MPa"], table[y]["q_c_MPa"]
+            se = math.sqrt(ex ** 2 + ey ** 2)
+            resolved = "yes" if math.isfinite(se) and abs(my - mx) > 2 * se else "no"
+            print("%s: %s %s -> %s: %.2f -> %.2f MPa, change %+.2f +- %.2f (%+.0f%%), resolved: %s (%d and %d seeds)"
+                  % (label(x, (field,)), field, x[at], y[at], mx, my, my - mx, se, 100 * (my / mx - 1), resolved, nx, ny))
+            paired = paired_change(seeded[x], seeded[y])
+            if paired:
+                n, mean, _, se = paired
+                print("    paired by seed (the same chamber and strengths): change %+.2f +- %.2f, resolved: %s (%d seeds)"
+                      % (mean, se, "yes" if math.isfinite(se) and abs(mean) > 2 * se else "no", n))
+
+
+def print_fit(table, seeded, field):
+    at = SETTING.index(field)
+    print("\nq_c against log2 %s (the others fixed), one intercept per seed: slope, its standard error" % field)
+    for members in families(table, field):
+        points = [(r["seed"], number(m[at]), number(r["q_c_MPa"])) for m in members for r in seeded[m]]
+        if not all(x > 0 for _, x, _ in points):
+            continue
+        fit = fit_log2(points)
+        if fit is None:
+            continue
+        runs, seeds, slope, se = fit
+        resolved = "yes" if math.isfinite(se) and abs(slope) > 2 * se else "no"
+        print("%s: %s = %s: %+.3f +- %.3f MPa per doubling of %s (%+.3f +- %.3f per halving), resolved: %s"
+              " (%d runs, %d seeds)" % (label(members[0], (field,)), field, ", ".join(m[at] for m in members),
+                                        slope, se, field, -slope, se, resolved, runs, seeds))
 
 
 def main():
@@ -74,6 +189,9 @@ def main():
     parser.add_argument("studies", nargs="+", help="study.csv files of scripts/penetration_study.sh")
     parser.add_argument("--vary", action="append", default=[], choices=SETTING,
                         help="compare the settings that differ in this field alone")
+    parser.add_argument("--fit-log2", action="append", default=[], choices=SETTING, metavar="FIELD",
+                        help="fit q_c against log2 of this numeric field over the settings that differ in it alone")
+    parser.add_argument("--members", action="store_true", help="list the cases of each setting")
     parser.add_argument("--markdown", action="store_true", help="tables in markdown")
     a = parser.parse_args()
     rows = []
@@ -82,43 +200,17 @@ def main():
             rows += list(csv.DictReader(f))
     if not rows:
         sys.exit("penetration_stats.py: no rows in %s" % " ".join(a.studies))
-    table = dict((setting, summarise(members)) for setting, members in groups(rows).items())
-    sep = " | " if a.markdown else "  "
-    head = ["setting", "seeds", "q_c (MPa)", "sd", "se", "events", "loaded", "I tip", "I chamber", "KE / work",
-            "steps", "time (s)"]
-    print(("| " if a.markdown else "") + sep.join(head) + (" |" if a.markdown else ""))
-    if a.markdown:
-        print("|" + "---|" * len(head))
-    for setting, s in table.items():
-        cells = [label(setting), "%d" % s["q_c_MPa"][0], "%.2f" % s["q_c_MPa"][1], "%.2f" % s["q_c_MPa"][2],
-                 "%.2f" % s["q_c_MPa"][3], "%.0f" % s["events"][1], "%.0f" % s["events_loaded"][1],
-                 "%.2g" % s["I_tip"][1], "%.2g" % s["I_chamber"][1], "%.2g" % s["ke_share"][1],
-                 "%.0f" % s["steps"][1], "%.0f" % s["seconds"][1]]
-        print(("| " if a.markdown else "") + sep.join(cells) + (" |" if a.markdown else ""))
+    seeded = groups(rows)
+    table = dict((setting, summarise(members)) for setting, members in seeded.items())
+    print_table(table, a.markdown)
+    if a.members:
+        print("\ncases of each setting (a case run under two names counts once)")
+        for setting, members in all_groups(rows).items():
+            print("%s: %s" % (label(setting), ",".join(r["case"] for r in members)))
     for field in a.vary:
-        at = SETTING.index(field)
-        others = {}
-        for setting in table:
-            others.setdefault(setting[:at] + setting[at + 1:], []).append(setting)
-        print("\nq_c against %s (the others fixed): change, its standard error, resolved at 2 se" % field)
-        for rest, members in others.items():
-            if len(members) < 2:
-                continue
-            numeric = all(math.isfinite(number(m[at])) for m in members)
-            members.sort(key=lambda m: (0, number(m[at]), "") if math.isfinite(number(m[at])) else (1, 0.0, m[at]))
-            # a numeric field (v, sigma_v): each value against the next; a named one (crushing,
-            # density): each against the first (crushing 0, dense)
-            for x, y in (zip(members, members[1:]) if numeric else ((members[0], m) for m in members[1:])):
-                (nx, mx, _, ex), (ny, my, _, ey) = table[x]["q_c_MPa"], table[y]["q_c_MPa"]
-                se = math.sqrt(ex ** 2 + ey ** 2)
-                resolved = "yes" if math.isfinite(se) and abs(my - mx) > 2 * se else "no"
-                print("%s: %s %s -> %s: %.2f -> %.2f MPa, change %+.2f +- %.2f (%+.0f%%), resolved: %s (%d and %d seeds)"
-                      % (label(x, (field,)), field, x[at], y[at], mx, my, my - mx, se, 100 * (my / mx - 1), resolved, nx, ny))
-                paired = paired_change(groups(rows)[x], groups(rows)[y])
-                if paired:
-                    n, mean, _, se = paired
-                    print("    paired by seed (the same chamber and strengths): change %+.2f +- %.2f, resolved: %s (%d seeds)"
-                          % (mean, se, "yes" if math.isfinite(se) and abs(mean) > 2 * se else "no", n))
+        print_changes(table, seeded, field)
+    for field in a.fit_log2:
+        print_fit(table, seeded, field)
 
 
 if __name__ == "__main__":

@@ -18,7 +18,8 @@
 # events of dense_region_1MPa and of N80_region, N80_everywhere).
 # Environment: LIGGGHTS (build/liggghts).
 # Writes OUT_DIR/<case>/ (the test's outputs, screen.txt, log.liggghts, the figures of
-# post/penetration.py), OUT_DIR/chambers/ and OUT_DIR/study.csv (one row a case: settings, grains,
+# post/penetration.py), OUT_DIR/chambers/ and OUT_DIR/study.csv (one row a case: every setting that
+# tells it from another case, the name=value ones too (tip_shape, sigma_lim0, neighbor_style, extra), grains,
 # particles and events at the end, steps, wall-clock seconds of the test alone, q_c and f_s over
 # the second half of the depth with their spread, I_G near the tip and far from it and near the tip
 # before the test, the chamber's consolidation events, the velocity, inertial numbers at the tip and
@@ -119,7 +120,33 @@ for k in 1 2 3 4 5 6; do
 done
 cases=""
 for c in ${*:-$order}; do cases+=" ${group[$c]:-$c}"; done
-[ -f "$out/study.csv" ] || echo "case,density,N,D_c_over_d50,crushing,v,width,ranks,distribution,sigma_v,seed,grains,particles,events,events_loaded,steps,seconds,q_c_MPa,q_c_sd_MPa,f_s_kPa,I_G_near,I_G_far,fragment_density,depth,I_G_near0,chamber_events,v_measured,I_tip,I_chamber,ke_share" > "$out/study.csv"
+# The last four columns, with the spec's, tell every case apart (post/penetration_stats.py groups by
+# all of them): tip_shape, sigma_lim0, neighbor_style (a name=value of the case, or the decks'
+# default) and extra (the case's other name=value settings, sorted, joined by ';'). The rows of
+# doc/penetration_study.csv, run before these columns, had them added from the case names and the
+# groups above: pile_* flat with stress_every=0.5, weak_* sigma_lim0 5e8, knob_bin_* bin, the rest
+# in.cone's defaults (cone, 5e9, multi: the runs postdate multi as in.cone's default).
+header="case,density,N,D_c_over_d50,crushing,v,width,ranks,distribution,sigma_v,seed,grains,particles,events,events_loaded,steps,seconds,q_c_MPa,q_c_sd_MPa,f_s_kPa,I_G_near,I_G_far,fragment_density,depth,I_G_near0,chamber_events,v_measured,I_tip,I_chamber,ke_share,tip_shape,sigma_lim0,neighbor_style,extra"
+[ -f "$out/study.csv" ] || echo "$header" > "$out/study.csv"
+[ "$(head -n 1 "$out/study.csv")" = "$header" ] || { echo "$out/study.csv: not this script's columns (an older study's, without those that tell the cases apart?): another OUT_DIR, or add them as doc/penetration_study.csv's were" >&2; exit 2; }
+# a deck's default for a variable: its 'variable NAME index VALUE' line
+default() { awk -v n="$2" '$1 == "variable" && $2 == n && $3 == "index" {print $4; exit}' "$1"; }
+# the case's defining settings of its name=value fields: tip_shape, sigma_lim0, neighbor_style, extra
+case_columns() {
+  local tip_shape sigma_lim0 neighbor_style extra=() kv
+  tip_shape=$(default "$here/examples/penetration/in.cone" tip_shape)
+  sigma_lim0=$(default "$here/examples/fontainebleau/in.grains" sigma_lim0)
+  neighbor_style=$(default "$here/examples/penetration/in.cone" neighbor_style)
+  for kv in ${1//,/ } ${2//,/ }; do
+    case ${kv%%=*} in
+      tip_shape) tip_shape=${kv#*=} ;;
+      sigma_lim0) sigma_lim0=${kv#*=} ;;
+      neighbor_style) neighbor_style=${kv#*=} ;;
+      *) extra+=("$kv") ;;
+    esac
+  done
+  echo "$tip_shape,$sigma_lim0,$neighbor_style,$(printf '%s\n' "${extra[@]}" | LC_ALL=C sort | paste -sd ';')"
+}
 # OUT_DIR/figures/<N>/: the named cases' files together, drawn by post/penetration.py
 draw() {
   local n=$1 tag=$2; shift 2
@@ -173,6 +200,7 @@ for name in $cases; do
              "${consolidation[@]}" "$name")
   echo "$summary"
   history=$dir/penetration/penetration_${name}_N${N}.csv
+  columns=$(case_columns "$cone_vars" "$chamber_vars")
   python3 - "$history" "$dir/penetration/penetration_${name}_summary.csv" "$dir/penetration/chamber_${density}_N${N}.in" \
     "$dir/penetration/screen.txt" <<EOF >> "$out/study.csv"
 import csv, re, sys
@@ -180,7 +208,7 @@ rows = list(csv.DictReader(open(sys.argv[1])))
 summary = next(csv.DictReader(open(sys.argv[2])))
 grains = int(float(open(sys.argv[3]).read().split("grains0 equal")[1].split()[0]))
 steps = int(float(re.search(r"CHECKED STEPS \\S+ OF (\\S+)", open(sys.argv[4]).read()).group(1)))
-print("$name,$density,$N,%.3f,$crushing,$v,$width,$ranks,$distribution,$sigma_v,$seed,%d,%d,%d,%s,%d,$seconds,%s,%s,%s,%s,%s,$fragment_density,$depth,%s,%s,%s,%s,%s,%s" % (
+print("$name,$density,$N,%.3f,$crushing,$v,$width,$ranks,$distribution,$sigma_v,$seed,%d,%d,%d,%s,%d,$seconds,%s,%s,%s,%s,%s,$fragment_density,$depth,%s,%s,%s,%s,%s,%s,$columns" % (
     0.0357 / (0.21e-3 * $N), grains, int(float(rows[-1]["particles"])), int(float(rows[-1]["events"])),
     summary["events_loaded"], steps,
     summary["q_c_MPa"], summary["q_c_sd_MPa"], summary["f_s_kPa"], summary["I_G_near"], summary["I_G_far"],

@@ -3,12 +3,14 @@
 analytic cone and shaft), those meshes pushed into a bed of grains by fix move/mesh, feeding fix
 crush through fix wall/gran hertz/scaled, and the scene's decks on a small chamber (in.chamber,
 in.cone: 3 D_c of penetration into some 700 grains, D_c / d50 = 2.1), with post/penetration.py on
-their outputs.
+their outputs; post/penetration_stats.py on stand-in study CSVs and on doc/penetration_study.csv (the
+cases stats_*, which need no liggghts).
 
   python3 test_penetration.py LIGGGHTS WORKDIR CASE"""
 import csv
 import math
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -31,6 +33,11 @@ PILE_POST = os.path.join(ROOT, "post", "pile_stress.py")
 # too rarely under a short push to test the books
 CHAMBER = {"N": 80, "width": 6, "depth": 3, "below": 2, "sigma_lim0": 5e8}
 DC = 0.0357
+STATS = os.path.join(ROOT, "post", "penetration_stats.py")
+STUDY = os.path.join(ROOT, "scripts", "penetration_study.sh")
+STUDY_CSV = os.path.join(ROOT, "doc", "penetration_study.csv")
+SEEDS = ("15485863", "179424673", "373587883")
+DEFAULTS_NAMED = {"tip_shape": "cone", "sigma_lim0": "5e9", "neighbor_style": "multi"}  # in.cone's
 
 
 def write_meshes(folder, diameter, shaft, tip, segments, *options):
@@ -434,6 +441,126 @@ def case_cone_resume(liggghts, work, ranks):
         resumed = open(os.path.join(folder, name % "killed")).read()
         check(whole == resumed and whole.count("\n") > 2, "%s: the resumed test's %d lines are the uninterrupted one's"
               % (name % "killed", resumed.count("\n")))
+
+
+def study_header():
+    """The columns of scripts/penetration_study.sh's study.csv (its header line)."""
+    return re.search(r'^header="(case,[^"]*)"', open(STUDY).read(), re.M).group(1).split(",")
+
+
+def write_study(path, rows, drop=()):
+    """A stand-in study.csv: each row (case, seed, q_c, settings) on the doc's dense cone at 0.5 m/s, the
+    columns in drop left out (an older study.csv)."""
+    header = [c for c in study_header() if c not in drop]
+    base = {"density": "dense", "N": "80", "D_c_over_d50": "2.125", "crushing": "region", "v": "0.5", "width": "10",
+            "ranks": "2", "distribution": "normal_clipped_originals", "sigma_v": "1e5", "fragment_density": "scaled",
+            "depth": "4", "tip_shape": "cone", "sigma_lim0": "5e9", "neighbor_style": "multi", "extra": ""}
+    with open(path, "w") as f:
+        writer = csv.DictWriter(f, header, restval="1", extrasaction="ignore")
+        writer.writeheader()
+        for case, seed, q_c, settings in rows:
+            writer.writerow(dict(base, case=case, seed=seed, q_c_MPa=q_c, **settings))
+    return path
+
+
+def run_stats(*args):
+    """post/penetration_stats.py --markdown --members on args: ({label: (seeds, mean q_c)},
+    {label: [cases]}, the other lines, the warnings)."""
+    proc = subprocess.run([sys.executable, STATS, "--markdown", "--members"] + list(args), stdout=subprocess.PIPE,
+                          stderr=subprocess.PIPE, universal_newlines=True, check=True)
+    table, members, rest, listing = {}, {}, [], False
+    for line in proc.stdout.splitlines():
+        cells = [c.strip() for c in line.strip("| ").split(" | ")]
+        listing = line.startswith("cases of each setting") or (listing and line != "")
+        if line.startswith("| ") and len(cells) > 3 and cells[1].isdigit():
+            table[cells[0]] = (int(cells[1]), float(cells[2]))
+        elif listing and ": " in line:
+            label, cases = line.rsplit(": ", 1)
+            members[label] = cases.split(",")
+        else:
+            rest.append(line)
+    return table, members, rest, [w for w in proc.stderr.splitlines() if "warning" in w]
+
+
+def fields(label):
+    return dict(word.split("=", 1) for word in label.split())
+
+
+def case_stats_groups(liggghts, work):
+    """post/penetration_stats.py tells apart what the study's columns tell apart: a cone, a pile
+    (tip_shape flat, stress_every), the weak sand's cone (sigma_lim0 5e8) and its pile, on the same
+    density, N, crushing, v and seeds, are four settings with their own means, named in the output;
+    the same rows without those columns (an older study.csv) fall into one setting of in.cone's
+    defaults, and the tool warns that rows of one seed there differ in q_c."""
+    del liggghts
+    groups = {"cone_s": ({}, (1.0, 1.2, 1.4)), "pile_s": ({"tip_shape": "flat", "extra": "stress_every=0.5"}, (5.0, 6.0, 7.0)),
+              "weak_cone_s": ({"sigma_lim0": "5e8"}, (0.8, 0.9, 1.0)),
+              "weak_pile_s": ({"tip_shape": "flat", "sigma_lim0": "5e8", "extra": "stress_every=0.5"}, (2.0, 2.5, 3.0))}
+    rows = [(name + str(k + 1), seed, q[k], settings) for name, (settings, q) in groups.items() for k, seed in enumerate(SEEDS)]
+    table, members, _, warnings = run_stats(write_study(os.path.join(work, "study.csv"), rows))
+    check(len(table) == 4 and not warnings, "four settings, no warning: %s" % "; ".join(table))
+    for name, (settings, q) in groups.items():
+        label = [lab for lab, cases in members.items() if cases == [name + "1", name + "2", name + "3"]]
+        check(len(label) == 1 and table[label[0]] == (3, round(sum(q) / 3, 2))
+              and all(fields(label[0]).get(k) == v for k, v in dict(DEFAULTS_NAMED, **settings).items() if v),
+              "%s*: a setting of its own, 3 seeds, q_c %.2f MPa, named %s" % (name, sum(q) / 3, label and label[0]))
+    old = write_study(os.path.join(work, "old.csv"), rows, drop=("tip_shape", "sigma_lim0", "neighbor_style", "extra"))
+    table, members, _, warnings = run_stats(old)
+    check(len(table) == 1, "without the columns the four fall into one setting: %s" % "; ".join(table))
+    label, = table
+    check(table[label] == (3, 1.2) and "tip_shape=cone sigma_lim0=5e9 neighbor_style=multi" in label
+          and len(members[label]) == 12 and len(warnings) == 9,
+          "without the columns: one setting of the defaults (%s), the first seed's rows kept, %d warnings (%s)"
+          % (label, len(warnings), warnings[0]))
+
+
+def case_stats_study_csv(liggghts, work):
+    """doc/penetration_study.csv has penetration_study.sh's columns, and penetration_stats.py on it
+    puts no pile with a cone nor the weak sand with Table 1's (told from the case names: pile_*,
+    weak_*), warns of no two rows of one setting and seed that differ; the weak pile with crushing
+    everywhere (the "dense, crushing 1, 100 kPa, 2.11 MPa, 61 events" setting the older grouping
+    called a cone) is a setting of its own; and q_c falls with v by doc/penetration.md's 0.19 +- 0.05
+    MPa per halving (the 30 rate runs, one intercept per seed)."""
+    del liggghts, work
+    header = open(STUDY_CSV).readline().strip().split(",")
+    check(header == study_header(), "doc/penetration_study.csv has the columns penetration_study.sh writes (%d)" % len(header))
+    table, members, rest, warnings = run_stats(STUDY_CSV, "--fit-log2", "v")
+    check(not warnings, "no two rows of one setting and seed differ in q_c")
+    mixed = []
+    for label, cases in members.items():
+        tips = {"flat" if re.match(r"(weak_)?pile_", c) else "cone" for c in cases}
+        strengths = {"5e8" if c.startswith("weak_") else "5e9" for c in cases}
+        if tips != {fields(label)["tip_shape"]} or strengths != {fields(label)["sigma_lim0"]}:
+            mixed.append(",".join(cases))
+    check(len(members) == len(table) == 22 and not mixed,
+          "%d settings of %d cases, none with two tip shapes or two sigma_lim0, none named for another (%s)"
+          % (len(members), sum(map(len, members.values())), "; ".join(mixed)))
+    weak_pile = [lab for lab, cases in members.items() if cases == ["weak_pile_1_s1", "weak_pile_1_s2", "weak_pile_1_s3"]]
+    cone_1 = [lab for lab in table if (fields(lab)["crushing"], fields(lab)["sigma_v"], fields(lab)["tip_shape"]) == ("1", "1e5", "cone")]
+    check(len(weak_pile) == 1 and table[weak_pile[0]] == (3, 2.11) and not cone_1,
+          "the weak pile everywhere: its own setting (%s), 3 seeds, 2.11 MPa; no cone crushing everywhere at 100 kPa"
+          % (weak_pile and weak_pile[0]))
+    fit = [re.search(r"([-+]\d\.\d+) \+- (\d\.\d+) per halving.*\((\d+) runs, (\d+) seeds\)", line) for line in rest]
+    fit = [m.groups() for m in fit if m]
+    check(fit == [("-0.188", "0.048", "30", "6")], "q_c against log2 v: %s per halving, runs, seeds" % fit)
+
+
+def case_stats_fit_log2(liggghts, work):
+    """--fit-log2 v on a stand-in ladder whose slope and standard error are known: q_c = a_seed +
+    0.2 log2 v + e over v = 0.5, 1, 2 and three seeds (a = 1, 2, 3), e = (+0.1, -0.2, +0.1) in each
+    seed (orthogonal to the intercept and to log2 v): the slope is 0.2, the residuals' sum of squares
+    0.18 over 9 - 3 - 1 = 5 degrees of freedom, the squares of log2 v about each seed's mean sum to
+    6, so se = sqrt(0.18 / 5 / 6) = 0.0775; a second setting (crushing 0) is fitted apart."""
+    del liggghts
+    e = {"0.5": 0.1, "1": -0.2, "2": 0.1}
+    rows = [("%s_v%s_s%d" % (crushing, v, k + 1), seed, a + 0.2 * math.log2(float(v)) + e[v] + offset, {"v": v, "crushing": crushing})
+            for crushing, offset in (("region", 0.0), ("0", 5.0)) for k, (seed, a) in enumerate(zip(SEEDS, (1, 2, 3)))
+            for v in e]
+    _, _, rest, _ = run_stats(write_study(os.path.join(work, "ladder.csv"), rows), "--fit-log2", "v")
+    fit = [m.groups() for m in (re.search(r"crushing=(\S+) .*: v = 0.5, 1, 2: \+(\d\.\d+) \+- (\d\.\d+) MPa per doubling"
+                                          r".*\((\d+) runs, (\d+) seeds\)", line) for line in rest) if m]
+    check(sorted(fit) == [("0", "0.200", "0.077", "9", "3"), ("region", "0.200", "0.077", "9", "3")],
+          "slope 0.200 +- 0.077 per doubling of v, for each of the two settings: %s" % fit)
 
 
 if __name__ == "__main__":
