@@ -50,13 +50,20 @@ def read_csv(path):
 
 
 def read_dump(path):
-    """{tag: (x, y, z, radius, generation)} of a dump custom 'id type x y z radius f_crush[2]'."""
+    """{tag: (x, y, z, radius, generation, N)} of a dump custom 'id type x y z radius f_crush[2]' (by the
+    header's names; N is the particle's own scale factor where the dump has f_grain_scale, the
+    refined chambers' per-grain N, else None)."""
     atoms, lines = {}, open(path).read().split("\n")
-    start = next(i for i, line in enumerate(lines) if line.startswith("ITEM: ATOMS")) + 1
-    for line in lines[start:]:
+    head = next(i for i, line in enumerate(lines) if line.startswith("ITEM: ATOMS"))
+    names = lines[head].split()[2:]
+    col = {name: k for k, name in enumerate(names)}
+    scale = col.get("f_grain_scale")
+    for line in lines[head + 1:]:
         w = line.split()
-        if len(w) >= 7:
-            atoms[int(w[0])] = (float(w[2]), float(w[3]), float(w[4]), float(w[5]), float(w[6]))
+        if len(w) == len(names):
+            atoms[int(w[col["id"]])] = (float(w[col["x"]]), float(w[col["y"]]), float(w[col["z"]]),
+                                        float(w[col["radius"]]), float(w[col["f_crush[2]"]]),
+                                        float(w[scale]) if scale is not None else None)
     return atoms
 
 
@@ -81,13 +88,13 @@ def kept_fraction(events, atoms):
     return None
 
 
-def grading(particles, removed, fines_top, N):
-    """Percent passing at SIEVES and I_G of (diameter, volume) particles plus a removed volume spread
-    as fractal fines below fines_top (all sizes downscaled by N)."""
+def grading(particles, removed, fines_top):
+    """Percent passing at SIEVES and I_G of (sand size, model volume) particles plus a removed volume
+    spread as fractal fines below fines_top (sizes downscaled: d / N of each particle)."""
     total = sum(v for _, v in particles) + removed
 
     def passing(size):
-        solid = sum(v for d, v in particles if d / N < size)
+        solid = sum(v for d, v in particles if d < size)
         fines = removed * (min(size / fines_top, 1.0) ** (3 - FRACTAL_DIMENSION) if fines_top > 0 else 1.0)
         return (solid + fines) / total
 
@@ -102,8 +109,8 @@ def zone_gradings(atoms, events, kept, tip, Dc, N, zone, far, fines_top):
     are every event of the sand's history up to the state of atoms, each removing 1 - kept of its
     mother as fines below fines_top."""
     near_p, far_p, near_removed, far_removed = [], [], 0.0, 0.0
-    for x, y, z, r, _ in atoms.values():
-        d, v = 2 * r, math.pi / 6 * (2 * r) ** 3
+    for x, y, z, r, _, n in atoms.values():
+        d, v = 2 * r / (n or N), math.pi / 6 * (2 * r) ** 3
         if math.sqrt(x * x + y * y + (z - tip) ** 2) < zone * Dc:
             near_p.append((d, v))
         elif math.sqrt(x * x + y * y) > far * Dc:
@@ -114,13 +121,14 @@ def zone_gradings(atoms, events, kept, tip, Dc, N, zone, far, fines_top):
             near_removed += removed
         elif math.sqrt(e["x"] ** 2 + e["y"] ** 2) > far * Dc:
             far_removed += removed
-    return (grading(near_p, near_removed, fines_top, N), len(near_p)), (grading(far_p, far_removed, fines_top, N), len(far_p))
+    return (grading(near_p, near_removed, fines_top), len(near_p)), (grading(far_p, far_removed, fines_top), len(far_p))
 
 
 def smallest_fragment(atoms, N):
-    """The fines' top size (downscaled): the smallest fragment of atoms, 0 where none broke."""
-    fragments = [2 * r for _, _, _, r, g in atoms.values() if g > 0]
-    return min(fragments) / N if fragments else 0.0
+    """The fines' top size (downscaled): the smallest fragment of atoms, d / N with its own N where the
+    dump has it, 0 where none broke."""
+    fragments = [2 * r / (n or N) for _, _, _, r, g, n in atoms.values() if g > 0]
+    return min(fragments) if fragments else 0.0
 
 
 def rate_measures(history, plateau, Dc, N):

@@ -203,6 +203,72 @@ def case_chamber_protocol(liggghts, work, ranks):
           "the uncrushable reference: no event in %d rows, %d particles" % (len(history), len(after)))
 
 
+REFINED = {"refine": 1, "coarsen": 1.25, "fine_radius": 1, "mid_radius": 2}
+
+
+def zone_scale(x, y):
+    """The N of the small refined chamber's zone at (x, y): 80 within 1 D_c of the axis, 100 to 2 D_c,
+    125 beyond (REFINED)."""
+    r = math.hypot(x, y) / 0.0357
+    return 80.0 if r < 1 else 100.0 if r < 2 else 125.0
+
+
+def fragments_share_scale(events, atoms):
+    """The events whose fragments, all present in atoms, do not all hold one N."""
+    scale = {int(a["id"]): a["f_grain_scale"] for a in atoms}
+    odd = []
+    for e in events:
+        tags = [int(float(v)) for k, v in e.items() if k.startswith("fragment_")]
+        if all(t in scale for t in tags) and len({scale[t] for t in tags}) != 1:
+            odd.append(e["tag"])
+    return odd
+
+
+@variants(*each_rank_count(1, 2))
+def case_refined_chamber(liggghts, work, ranks):
+    """A refined chamber (in.chamber refine 1, in.zones: N 80 within 1 D_c of the axis, 100 to 2 D_c,
+    125 beyond), on 1 and 2 ranks: each grain holds its zone's N (fix crush scale_atom), the zones
+    hold one sand grading (d / N alike, model sizes growing with N), the consolidation's fragments
+    keep their mother's N, the profile dump reads back through post/chamber_profiles.py, and a
+    short push with crushing in the zone keeps its books."""
+    ranks = int(ranks)
+    folder = prepare_chamber(liggghts, work, ranks, **REFINED)
+    _, _, atoms = read_dump(os.path.join(folder, "chamber_dense_N80.liggghts"))[0]
+    originals = [a for a in atoms if a["f_crush[2]"] == 0]
+    scales = sorted({a["f_grain_scale"] for a in atoms})
+    check(scales == [80.0, 100.0, 125.0], "the zones' N: %s" % scales)
+    placed = sum(1 for a in originals if a["f_grain_scale"] == zone_scale(a["x"], a["y"]))
+    check(placed >= 0.8 * len(originals), "%d of the %d unbroken grains hold the N of the zone they lie in (grains near an interface cross it as they grow)"
+          % (placed, len(originals)))
+    by_zone = {n: [2 * a["radius"] for a in originals if a["f_grain_scale"] == n] for n in scales}
+    model = {n: sum(d) / len(d) for n, d in by_zone.items()}
+    sand = [model[n] / n for n in scales]
+    check(max(sand) / min(sand) < 1.15 and model[125.0] > model[100.0] > model[80.0],
+          "mean model diameters %s mm grow with N; as sand sizes (d / N) %s mm they agree within 15%%"
+          % (["%.2f" % (model[n] * 1e3) for n in scales], ["%.4f" % (x * 1e3) for x in sand]))
+    consolidation = read_rows(os.path.join(folder, "events_chamber_dense_N80.csv"), numeric=False)
+    odd = fragments_share_scale(consolidation, atoms)
+    check(consolidation and not odd, "the fragments of each of the %d consolidation events hold one N (%d do not)"
+          % (len(consolidation), len(odd)))
+    profiles = subprocess.run([sys.executable, os.path.join(ROOT, "post", "chamber_profiles.py"),
+                               os.path.join(folder, "chamber_dense_N80_profile.liggghts"), "--interfaces", "1,2",
+                               "--dr", "0.5", "--out", os.path.join(folder, "profiles")],
+                              capture_output=True, text=True)
+    # (the porosity and the mean stress of each annulus; a blank is a column without data, e.g. no rattler-free grain)
+    rows = [{k: float(r[k]) for k in ("porosity", "p")}
+            for r in read_rows(os.path.join(folder, "profiles.csv"), numeric=False)] if profiles.returncode == 0 else []
+    check(rows and all(0.2 < r["porosity"] < 0.7 for r in rows) and all(r["p"] > 0 for r in rows),
+          "post/chamber_profiles.py on the profile dump: %d annuli, porosity %s, p %s kPa"
+          % (len(rows), ["%.3f" % r["porosity"] for r in rows], ["%.0f" % (r["p"] / 1e3) for r in rows])
+          if rows else "post/chamber_profiles.py failed: %s" % profiles.stderr[-500:])
+    push(liggghts, folder, ranks, crushing="region", vtk=0, depth=1.5, **REFINED)
+    history, _, events = check_test_books(folder, "dense_region")
+    _, _, after = read_dump(os.path.join(folder, "particles_dense_region_N80.liggghts"))[0]
+    odd = fragments_share_scale(events, after)
+    check(not odd and {a["f_grain_scale"] for a in after} == set(scales),
+          "the push's %d events: each one's fragments hold one N; the zones' N kept" % len(events))
+
+
 @variants(*each_rank_count(1, 2))
 def case_penetrometer_push(liggghts, work, ranks):
     """The meshes pushed into 50 grains by fix move/mesh, on 1 and 2 ranks: the cone takes an upward
