@@ -10,10 +10,14 @@ dense, cone), with its standard error, and whether it is resolved at 2 standard 
 ran the same seeds, the change paired by seed too (each seed's own difference, free of the chambers'
 scatter); for --fit-log2 FIELD, the slope of q_c against log2 FIELD over all the runs of the
 settings that differ in FIELD alone, one intercept per seed (ordinary least squares), with its
-standard error; --members lists the cases of each setting.
+standard error; --members lists the cases of each setting; --versus A B compares two sets of cases
+named by patterns (fnmatch: 'refined_N34_w10_s*' against 'rate_v0.25_s*'), settings that differ in
+more than one field (D_c / d50 with the velocity that keeps the inertial number, a refined chamber
+against a uniform one): the means, their difference with the unpaired standard error (Welch) and
+whether it is resolved at 2 standard errors, and a field of the study (--field, default q_c_MPa).
 
     post/penetration_stats.py study.csv [more.csv ...] [--vary v] [--vary crushing] [--fit-log2 v]
-                              [--members] [--markdown]
+                              [--members] [--markdown] [--versus A B [--field q_c_MPa]]
 
 Rows without a defining column (an older study.csv) take in.cone's default for it (DEFAULTS). Two
 rows of one setting and one seed are one run (a case run under two names): the first is kept, and
@@ -21,6 +25,7 @@ a warning names them where their q_c differ, the sign of a column that should te
 """
 import argparse
 import csv
+import fnmatch
 import math
 import sys
 
@@ -184,6 +189,35 @@ def print_fit(table, seeded, field):
                                         slope, se, field, -slope, se, resolved, runs, seeds))
 
 
+def versus(rows, first, second, field):
+    """The cases named by the patterns first and second (one row per seed in each: the first of a
+    seed's rows kept): (n, mean, sd, se) of field in each, and (difference second - first, its
+    unpaired standard error)."""
+    picked = []
+    for pattern in (first, second):
+        members = [r for r in rows if fnmatch.fnmatch(r["case"], pattern)]
+        kept = dict()
+        for r in members:
+            kept.setdefault(r["seed"], r)
+        values = [number(r.get(field, "nan")) for r in kept.values()]
+        values = [x for x in values if math.isfinite(x)]
+        if not values:
+            sys.exit("penetration_stats.py: --versus: no case matches %s with a value of %s" % (pattern, field))
+        picked.append(statistics(values))
+    (n1, m1, _, se1), (n2, m2, _, se2) = picked
+    se = math.sqrt(se1 ** 2 + se2 ** 2) if n1 > 1 and n2 > 1 else float("nan")
+    return picked, (m2 - m1, se)
+
+
+def print_versus(rows, first, second, field):
+    (a, b), (change, se) = versus(rows, first, second, field)
+    print("\n%s: %s against %s" % (field, second, first))
+    for name, (n, mean, sd, s_e) in ((first, a), (second, b)):
+        print("  %-28s %d seeds, mean %.4g, sd %.3g, se %.3g" % (name, n, mean, sd, s_e))
+    resolved = "resolved" if abs(change) > 2 * se else "not resolved"
+    print("  change %+.4g +- %.3g (unpaired), %s at 2 se" % (change, se, resolved))
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("studies", nargs="+", help="study.csv files of scripts/penetration_study.sh")
@@ -193,6 +227,9 @@ def main():
                         help="fit q_c against log2 of this numeric field over the settings that differ in it alone")
     parser.add_argument("--members", action="store_true", help="list the cases of each setting")
     parser.add_argument("--markdown", action="store_true", help="tables in markdown")
+    parser.add_argument("--versus", nargs=2, action="append", default=[], metavar=("A", "B"),
+                        help="compare the cases named by pattern B against those of pattern A (unpaired)")
+    parser.add_argument("--field", default="q_c_MPa", help="the study's column that --versus compares (default q_c_MPa)")
     a = parser.parse_args()
     rows = []
     for path in a.studies:
@@ -211,6 +248,8 @@ def main():
         print_changes(table, seeded, field)
     for field in a.fit_log2:
         print_fit(table, seeded, field)
+    for first, second in a.versus:
+        print_versus(rows, first, second, a.field)
 
 
 if __name__ == "__main__":

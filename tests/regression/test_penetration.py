@@ -629,5 +629,22 @@ def case_stats_fit_log2(liggghts, work):
           "slope 0.200 +- 0.077 per doubling of v, for each of the two settings: %s" % fit)
 
 
+def case_stats_versus(liggghts, work):
+    """--versus A B on stand-in studies of known means: B's q_c (2.0, 2.2, 2.4) against A's (1.0, 1.2, 1.4
+    and a second row of one seed, dropped) differ by +1.000 +- 0.163 (each se 0.2 / sqrt(3)), resolved;
+    B against a set of the same mean (1.9, 2.2, 2.5: se 0.173) by 0.000 +- 0.208, not resolved."""
+    del liggghts
+    rows = [("a_s%d" % (k + 1), seed, q, {}) for k, (seed, q) in enumerate(zip(SEEDS, (1.0, 1.2, 1.4)))]
+    rows += [("a_again_s1", SEEDS[0], 9.9, {})]
+    rows += [("b_s%d" % (k + 1), seed, q, {"N": "34"}) for k, (seed, q) in enumerate(zip(SEEDS, (2.0, 2.2, 2.4)))]
+    rows += [("c_s%d" % (k + 1), seed, q, {"N": "17"}) for k, (seed, q) in enumerate(zip(SEEDS, (1.9, 2.2, 2.5)))]
+    study = write_study(os.path.join(work, "versus.csv"), rows)
+    _, _, rest, _ = run_stats(study, "--versus", "a_*", "b_*", "--versus", "b_*", "c_*")
+    changes = [line.strip() for line in rest if line.strip().startswith("change")]
+    check(changes == ["change +1 +- 0.163 (unpaired), resolved at 2 se",
+                      "change +0 +- 0.208 (unpaired), not resolved at 2 se"],
+          "b against a: %s; c against b: %s" % tuple(changes + ["?", "?"])[:2])
+
+
 if __name__ == "__main__":
     test_main(globals(), sys.argv[1:])
