@@ -4,7 +4,7 @@ mean stress, coordination number, particle count, scale factor N and diameter in
 cone's axis, and the jump of each across the interfaces between the zones (fine grains near the
 axis, coarser beyond R1, coarser still beyond R2).
 
-    post/chamber_profiles.py DUMP [--snapshot STEP] [--Dc 0.0357] [--dr 0.5] [--rmax R]
+    post/chamber_profiles.py DUMP [DUMP ...] [--snapshot STEP] [--Dc 0.0357] [--dr 0.5] [--rmax R]
                              [--wall-x WX] [--wall-y WY] [--zmin Z1] [--zmax Z2] [--margin 1]
                              [--interfaces R1,R2] [--points 20000] [--seed 1] [--out profiles] [--plot]
 
@@ -34,6 +34,10 @@ The jump across an interface is the mean of the two annuli just outside it less 
 inside (an annulus that the interface crosses is neither), with its standard error: porosity's from
 the Monte Carlo, p's from the spread of the two annuli's values, the coordination's from the
 particles' values; it is resolved when it is more than 3 standard errors.
+Several DUMPs are chambers of one setting with other seeds (their own samples): each is written as
+OUT_<k>, on one set of annuli (within the narrowest chamber), and OUT_seeds.csv gathers the annuli's
+mean and standard error over the chambers, OUT_seed_jumps.csv each interface's jump (each chamber's,
+then their mean and standard error), resolved at 2 standard errors.
 """
 import argparse
 import csv
@@ -342,9 +346,63 @@ def parse_interfaces(text):
     return [("R%d" % (k + 1), v) for k, v in enumerate(values)]
 
 
+SEED_QUANTITIES = ("porosity", "p", "sigma_rr", "sigma_tt", "coordination", "coordination_nr", "mean_N")
+
+
+def over_seeds(per_seed, interfaces, Dc):
+    """Each chamber's profile (one per seed: their own samples) gathered: per annulus, the mean and the
+    standard error over the chambers of each quantity; per interface, each chamber's jump (the mean
+    of the two annuli outside less the two inside) and their mean and standard error, resolved at
+    2 standard errors."""
+    annuli = []
+    for k in range(len(per_seed[0])):
+        row = {"r_lo": per_seed[0][k]["r_lo"], "r_hi": per_seed[0][k]["r_hi"]}
+        for q in SEED_QUANTITIES:
+            values = [rows[k].get(q) for rows in per_seed]
+            if all(v is not None for v in values):
+                row[q], row[q + "_se"] = mean_se(values)
+        annuli.append(row)
+    jumps = []
+    for label, R in interfaces:
+        for q in SEED_QUANTITIES[:-1]:
+            values = []
+            for rows in per_seed:
+                pairs = sides(rows, R * Dc)
+                if pairs and all(row.get(q) is not None for row in pairs[0] + pairs[1]):
+                    values.append(np.mean([row[q] for row in pairs[1]]) - np.mean([row[q] for row in pairs[0]]))
+            if len(values) == len(per_seed) > 1:
+                mean, se = mean_se(values)
+                jumps.append({"interface": label, "R_over_Dc": R, "quantity": q, "jump": mean, "jump_se": se,
+                              "seeds": len(values), "resolved": abs(mean) > 2 * se})
+    return annuli, jumps
+
+
+def write_seeds(prefix, annuli, jumps, Dc):
+    with open(prefix + "_seeds.csv", "w", newline="") as f:
+        w = csv.writer(f)
+        names = [q for q in SEED_QUANTITIES if q in annuli[0]]
+        w.writerow(["r_lo", "r_hi", "r_over_Dc"] + [c for q in names for c in (q, q + "_se")])
+        for row in annuli:
+            w.writerow(["%.12g" % row["r_lo"], "%.12g" % row["r_hi"], "%.12g" % ((row["r_lo"] + row["r_hi"]) / 2 / Dc)]
+                       + [fmt(row.get(c), "%.12g") for q in names for c in (q, q + "_se")])
+    with open(prefix + "_seed_jumps.csv", "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["interface", "R_over_Dc", "quantity", "seeds", "jump", "jump_se", "resolved"])
+        for j in jumps:
+            w.writerow([j["interface"], "%g" % j["R_over_Dc"], j["quantity"], j["seeds"], fmt(j["jump"], "%.12g"),
+                        fmt(j["jump_se"], "%.12g"),
+                        int(j["resolved"])])
+    print("over %s chambers: the jumps across the interfaces (outside less inside, mean +- se over the chambers)"
+          % (jumps[0]["seeds"] if jumps else "the"))
+    for j in jumps:
+        print("  %s = %g D_c: %-16s %+.4g +- %.3g, %s" % (j["interface"], j["R_over_Dc"], j["quantity"], j["jump"], j["jump_se"],
+                                                        "resolved" if j["resolved"] else "not resolved"))
+
+
 def main(argv):
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("dump", help="a LIGGGHTS dump custom file with id x y z radius [c_stress[1..4]] [c_coord] [f_grain_scale]")
+    ap.add_argument("dump", nargs="+", help="LIGGGHTS dump custom files with id x y z radius [c_stress[1..4]] [c_coord] "
+                                            "[f_grain_scale]; several: one chamber each (seeds), gathered in OUT_seeds.csv")
     ap.add_argument("--snapshot", type=int, default=None, help="the timestep of the snapshot to read (default: the last)")
     ap.add_argument("--Dc", type=float, default=0.0357, help="the cone's diameter (m), the unit of --dr, --margin and --interfaces")
     ap.add_argument("--dr", type=float, default=0.5, help="annulus width (D_c)")
@@ -360,29 +418,44 @@ def main(argv):
     ap.add_argument("--column", default="c_stress", help="the stress/atom columns, NAME[1] ... NAME[4] (xx yy zz xy)")
     ap.add_argument("--coord", default="c_coord", help="the contact/atom column (contacts of each particle)")
     ap.add_argument("--scale", default="f_grain_scale", help="the column of each particle's scale factor N")
-    ap.add_argument("--out", default="profiles", help="prefix of OUT.csv, OUT_jumps.csv and OUT.png")
+    ap.add_argument("--out", default="profiles", help="prefix of OUT.csv, OUT_jumps.csv and OUT.png (OUT_<k>... for several dumps)")
     ap.add_argument("--plot", action="store_true", help="write OUT.png: porosity, p and coordination against r/D_c")
     a = ap.parse_args(argv)
     if not (a.Dc > 0 and a.dr > 0 and a.margin >= 0 and a.points > 0):
         raise SystemExit("chamber_profiles: --Dc, --dr and --points must be > 0 and --margin >= 0")
     interfaces = parse_interfaces(a.interfaces)
-    step, columns, data = read_snapshot(a.dump, a.snapshot)
-    p = particles_of(columns, data, a.dump, a.column, a.coord, a.scale)
-    if len(p["x"]) == 0:
-        raise SystemExit("chamber_profiles: snapshot %d of %s has no particle" % (step, a.dump))
-    edges, zmin, zmax = window(p, a.Dc, a.dr, a.rmax, a.wall_x, a.wall_y, a.zmin, a.zmax, a.margin)
-    rows = profiles(p, edges, zmin, zmax, a.points, a.seed)
-    jumps = interface_jumps(rows, a.Dc, interfaces)
-    print("chamber_profiles: %s, step %d: %d particles, %d annuli of %g D_c to r = %g m, z %g - %g m"
-          % (a.dump, step, len(p["x"]), len(rows), a.dr, edges[-1], zmin, zmax))
-    print_table(rows, a.Dc, interfaces, jumps)
-    write_csv(a.out + ".csv", rows, present_columns(rows, p), a.Dc)
-    write_jumps(a.out + "_jumps.csv", jumps)
-    written = [a.out + ".csv", a.out + "_jumps.csv"]
-    if a.plot:
-        plot(a.out + ".png", rows, a.Dc, interfaces)
-        written.append(a.out + ".png")
-    print("chamber_profiles: wrote %s" % ", ".join(written))
+    chambers = []
+    for path in a.dump:
+        step, columns, data = read_snapshot(path, a.snapshot)
+        p = particles_of(columns, data, path, a.column, a.coord, a.scale)
+        if len(p["x"]) == 0:
+            raise SystemExit("chamber_profiles: snapshot %d of %s has no particle" % (step, path))
+        chambers.append((path, step, p))
+    rmax = a.rmax
+    if rmax is None and len(chambers) > 1:
+        # one set of annuli for every chamber: within the narrowest
+        rmax = min(min(np.max(p["x"] + p["radius"]), np.max(p["y"] + p["radius"])) for _, _, p in chambers)
+    per_seed = []
+    for k, (path, step, p) in enumerate(chambers):
+        out = a.out if len(chambers) == 1 else "%s_%d" % (a.out, k + 1)
+        edges, zmin, zmax = window(p, a.Dc, a.dr, rmax, a.wall_x, a.wall_y, a.zmin, a.zmax, a.margin)
+        rows = profiles(p, edges, zmin, zmax, a.points, a.seed)
+        jumps = interface_jumps(rows, a.Dc, interfaces)
+        print("chamber_profiles: %s, step %d: %d particles, %d annuli of %g D_c to r = %g m, z %g - %g m"
+              % (path, step, len(p["x"]), len(rows), a.dr, edges[-1], zmin, zmax))
+        print_table(rows, a.Dc, interfaces, jumps)
+        write_csv(out + ".csv", rows, present_columns(rows, p), a.Dc)
+        write_jumps(out + "_jumps.csv", jumps)
+        written = [out + ".csv", out + "_jumps.csv"]
+        if a.plot:
+            plot(out + ".png", rows, a.Dc, interfaces)
+            written.append(out + ".png")
+        print("chamber_profiles: wrote %s" % ", ".join(written))
+        per_seed.append(rows)
+    if len(per_seed) > 1:
+        annuli, jumps = over_seeds(per_seed, interfaces, a.Dc)
+        write_seeds(a.out, annuli, jumps, a.Dc)
+        print("chamber_profiles: wrote %s_seeds.csv, %s_seed_jumps.csv" % (a.out, a.out))
 
 
 if __name__ == "__main__":

@@ -209,6 +209,56 @@ def case_stress(liggghts, work):
           "sigma_tt and sigma_zz zero to %.1e s0" % (worst, zero))
 
 
+def case_seeds(liggghts, work):
+    """Three chambers (seeds) of the two zones' packing, hydrostatic at p0, 2 p0 and 3 p0 inside 2.25 D_c
+    and at 2 p0 beyond: per annulus p's mean over the chambers is 2 p0 f_c on both sides, with standard
+    error p0 f_c / sqrt(3) inside and 0 beyond; the jump of p across 2.25 D_c (the two annuli outside
+    less the two inside, each chamber's) is 2 p0 (f_out - f_in) on average, with the spread of the
+    inner side over the chambers, p0 f_in / sqrt(3), as its standard error."""
+    del liggghts
+    import chamber_profiles
+    a, p0, R1 = DC / 10, 2e5, 2.25 * DC
+    packing = two_zones(40, 24, a, R1)
+    columns = ["x", "y", "z", "radius", "c_stress[1]", "c_stress[2]", "c_stress[3]", "c_stress[4]"]
+    dumps = []
+    for k, inner in enumerate((1, 2, 3)):
+        rows = []
+        for x, y, z, radius, _ in packing:
+            v = 4 / 3 * math.pi * radius ** 3 * (inner if math.hypot(x, y) < R1 else 2)
+            rows.append((x, y, z, radius, -p0 * v, -p0 * v, -p0 * v, 0))
+        dumps.append(os.path.join(work, "chamber_%d.dump" % (k + 1)))
+        with open(dumps[-1], "w") as f:
+            f.write("ITEM: TIMESTEP\n100\nITEM: NUMBER OF ATOMS\n%d\nITEM: BOX BOUNDS ff ff ff\n0 0.08\n0 0.08\n0 0.05\n"
+                    "ITEM: ATOMS id %s\n" % (len(rows), " ".join(columns)))
+            for n, row in enumerate(rows):
+                f.write("%d %s\n" % (n + 1, " ".join("%.17g" % value for value in row)))
+    out = os.path.join(work, "seeds")
+    text = io.StringIO()
+    zmin, zmax = 6 * a, 18 * a
+    with contextlib.redirect_stdout(text):
+        chamber_profiles.main(dumps + ["--Dc", str(DC), "--out", out, "--dr", "0.5", "--zmin", str(zmin), "--zmax",
+                                       str(zmax), "--points", "500", "--interfaces", "2.25"])
+    with open(out + "_seeds.csv") as f:
+        annuli = [{k: float(v) for k, v in r.items() if v != ""} for r in csv.DictReader(f)]
+    fc = [sum(4 / 3 * math.pi * r ** 3 for x, y, z, r, _ in packing if in_annulus(x, y, z, row, zmin, zmax))
+          / (math.pi / 4 * (row["r_hi"] ** 2 - row["r_lo"] ** 2) * (zmax - zmin)) for row in annuli]
+    inside = [row["r_hi"] <= R1 for row in annuli]
+    worst = max(abs(row["p"] / (2 * p0 * f) - 1) for row, f in zip(annuli, fc))
+    spread = max(abs(row["p_se"] - (p0 * f / math.sqrt(3) if inner else 0.0)) / (p0 * f)
+                 for row, f, inner in zip(annuli, fc, inside) if inner or row["r_lo"] >= R1)
+    check(len(annuli) == 8 and worst < 1e-9 and spread < 1e-9,
+          "p over 3 chambers: 2 p0 f_c in each of 8 annuli (to %.1e), se p0 f_c / sqrt(3) inside and 0 beyond (to %.1e)"
+          % (worst, spread))
+    with open(out + "_seed_jumps.csv") as f:
+        jump = [r for r in csv.DictReader(f) if r["quantity"] == "p"][0]
+    f_in, f_out = (fc[2] + fc[3]) / 2, (fc[5] + fc[6]) / 2
+    mean, se = 2 * p0 * (f_out - f_in), p0 * f_in / math.sqrt(3)
+    check(abs(float(jump["jump"]) - mean) < 1e-9 * p0 and abs(float(jump["jump_se"]) / se - 1) < 1e-9
+          and jump["seeds"] == "3" and jump["resolved"] == str(int(abs(mean) > 2 * se)),
+          "p's jump across 2.25 D_c over 3 chambers: %s +- %s = 2 p0 (f_out - f_in) +- p0 f_in / sqrt(3)"
+          % (jump["jump"], jump["jump_se"]))
+
+
 def case_missing_column(liggghts, work):
     """A dump without the radius column stops with a message that names it; so does a --snapshot
     that the dump does not hold, naming the ones it does."""
