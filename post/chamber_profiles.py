@@ -310,7 +310,7 @@ def plot(path, rows, Dc, interfaces):
     x = np.array([(row["r_lo"] + row["r_hi"]) / 2 / Dc for row in rows])
     panels = [("porosity", "porosity_se", "porosity")]
     if "p" in rows[0]:
-        panels.append(("p", None, "p (Pa)"))
+        panels.append(("p", "p_se" if "p_se" in rows[0] else None, "p (Pa)"))
     if "coordination" in rows[0]:
         panels.append(("coordination", "coordination_se", "coordination"))
     fig, axes = plt.subplots(len(panels), 1, sharex=True, figsize=(6, 2.4 * len(panels)), squeeze=False)
@@ -319,7 +319,7 @@ def plot(path, rows, Dc, interfaces):
         err = None if se_key is None else np.array([0.0 if row.get(se_key) is None else row[se_key] for row in rows])
         ax.errorbar(x, y, yerr=err, fmt="o-", ms=3, lw=1, capsize=2)
         if key == "coordination" and "coordination_nr" in rows[0]:
-            ax.plot(x, [np.nan if row["coordination_nr"] is None else row["coordination_nr"] for row in rows], "s--",
+            ax.plot(x, [np.nan if row.get("coordination_nr") is None else row["coordination_nr"] for row in rows], "s--",
                     ms=3, lw=1, label="without rattlers")
             ax.legend(fontsize=8)
         for name, R in interfaces:
@@ -455,7 +455,12 @@ def main(argv):
     if len(per_seed) > 1:
         annuli, jumps = over_seeds(per_seed, interfaces, a.Dc)
         write_seeds(a.out, annuli, jumps, a.Dc)
-        print("chamber_profiles: wrote %s_seeds.csv, %s_seed_jumps.csv" % (a.out, a.out))
+        written = [a.out + "_seeds.csv", a.out + "_seed_jumps.csv"]
+        if a.plot:
+            # the mean over the chambers, with its standard error
+            plot(a.out + "_seeds.png", annuli, a.Dc, interfaces)
+            written.append(a.out + "_seeds.png")
+        print("chamber_profiles: wrote %s" % ", ".join(written))
 
 
 if __name__ == "__main__":
