@@ -237,15 +237,12 @@ void FixCrush::check_particles() const
 {
   const bool lost_error = output->thermo->lost_policy() == Thermo::LOST_ERROR;
   auto outside = [this, lost_error](const double *x) { return lost_error && leaves_box(x); };
-  int first = std::numeric_limits<int>::max();
-  for (int i = 0; i < atom->nlocal; i++) {
+  const int first_all = first_failing([this, &outside](int i) {
     const double r = atom->radius[i], rho = atom->density[i];
     const bool bad_data = (atom->mask[i] & groupbit) && !(r > 0.0 && std::isfinite(r) && rho > 0.0 && std::isfinite(rho));
-    if (bad_data || outside(atom->x[i])) first = std::min(first, static_cast<int>(atom->tag[i]));
-  }
-  int first_all = 0;
-  MPI_Allreduce(&first, &first_all, 1, MPI_INT, MPI_MIN, world);
-  if (first_all == std::numeric_limits<int>::max()) return;
+    return bad_data || outside(atom->x[i]);
+  });
+  if (!first_all) return;
   const int i = atom->map(first_all);
   if (i >= 0 && i < atom->nlocal) {
     char msg[512];
@@ -261,6 +258,18 @@ void FixCrush::check_particles() const
     error->one(FLERR, msg);
   }
   MPI_Barrier(world);  // the owner stops the run
+}
+
+// The smallest tag over all processors of a local particle for which fails(i), 0 where none: the
+// particle a check names, on every processor alike.
+int FixCrush::first_failing(const std::function<bool(int)> &fails) const
+{
+  int first = std::numeric_limits<int>::max();
+  for (int i = 0; i < atom->nlocal; i++)
+    if (fails(i)) first = std::min(first, static_cast<int>(atom->tag[i]));
+  int first_all = 0;
+  MPI_Allreduce(&first, &first_all, 1, MPI_INT, MPI_MIN, world);
+  return first_all == std::numeric_limits<int>::max() ? 0 : first_all;
 }
 
 // Every granular contact, pair or wall, feeds the check through LIGGGHTS' granular pair loop and wall

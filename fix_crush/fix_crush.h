@@ -101,6 +101,7 @@ class FixCrush : public Fix {
   void log_events(const std::vector<Event> &events, tagint first_new_tag);
   void open_log();
   void check_particles() const;
+  int first_failing(const std::function<bool(int)> &fails) const;
   // grains that leave the box (fix_crush_outflow.cpp)
   bool leaves_box(const double *x) const;
   void count_outflow();

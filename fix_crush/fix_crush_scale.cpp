@@ -15,7 +15,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <limits>
 #include <string>
 
 #include "atom.h"
@@ -48,14 +47,11 @@ void FixCrush::find_scale()
 void FixCrush::check_scales() const
 {
   if (!fix_scale_) return;
-  int first = std::numeric_limits<int>::max();
-  for (int i = 0; i < atom->nlocal; i++) {
+  const int first_all = first_failing([this](int i) {
     const double n = fix_scale_->vector_atom[i];
-    if ((atom->mask[i] & groupbit) && !(n > 0.0 && std::isfinite(n))) first = std::min(first, static_cast<int>(atom->tag[i]));
-  }
-  int first_all = 0;
-  MPI_Allreduce(&first, &first_all, 1, MPI_INT, MPI_MIN, world);
-  if (first_all == std::numeric_limits<int>::max()) return;
+    return (atom->mask[i] & groupbit) && !(n > 0.0 && std::isfinite(n));
+  });
+  if (!first_all) return;
   const int i = atom->map(first_all);
   if (i >= 0 && i < atom->nlocal) {
     char msg[512];
