@@ -192,7 +192,7 @@ void FixCrush::init()
   check_bodies();
   find_true_density();
   find_scale();
-  check_scales();
+  check_scales();  // before the time-step check below reads the smallest N; again at each reneighboring
   find_inherited_state();
   outflow_reported_ = false;
   setup_limit_factors();

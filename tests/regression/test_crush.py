@@ -365,6 +365,12 @@ def case_bad_input(liggghts, work):
                                                       "pair_style      gran model hooke/hysteresis tangential history")],
          "not the elastic force of pair_style gran's model hooke/hysteresis"),
         ("no atom map", [("atom_modify     map array\n", "")], "fix crush needs an atom map: add 'atom_modify map array'"),
+        # each particle's own N (scale_atom): the property must exist, and every N be finite and > 0
+        ("scale_atom without property", [("dmin 0.0001 log", "dmin 0.0001 scale_atom nowhere log")],
+         "keyword 'scale_atom': no scalar fix property/atom named 'nowhere'"),
+        ("scale_atom of zero", [("dmin 0.0001 log", "dmin 0.0001 scale_atom grainScale log"),
+                                (pair, "fix             grain_scale all property/atom grainScale scalar yes no no 0.\n" + pair)],
+         "keyword 'scale_atom': particle 1 has grainScale = 0"),
         # the balance command's arguments
         ("balance thresh", [("pair_coeff      * *\n", "pair_coeff      * *\nbalance 0.5 shift x 20 1.0\n")],
          "balance: thresh expects a number >= 1"),
