@@ -23,7 +23,11 @@ the volume those events removed is in the gradings too), and writes there:
                          and (I_G_near0, I_G_far0) those zones' I_G in the consolidated chamber before
                          the test (chamber_<density>_N<N>.liggghts, in.chamber's dump); the
                          velocity, the inertial number at the tip and in the chamber, and the grains'
-                         kinetic energy as a share of the penetrometer's work (over the plateau)
+                         kinetic energy as a share of the penetrometer's work (over the plateau); the
+                         crushing about the tip's path (the axis above the final tip, the tip below it):
+                         the test's events within 1 and --path D_c of it (events_path1, events_path2)
+                         and beyond --far D_c of the axis (events_far), I_G within --path D_c of it
+                         after the test and before (I_G_path, I_G_path0)
 and prints the summary.
 """
 import argparse
@@ -124,6 +128,30 @@ def zone_gradings(atoms, events, kept, tip, Dc, N, zone, far, fines_top):
     return (grading(near_p, near_removed, fines_top), len(near_p)), (grading(far_p, far_removed, fines_top), len(far_p))
 
 
+def path_distance(x, y, z, tip):
+    """The distance of (x, y, z) from the tip's path: the axis above the tip's final place, the tip
+    below it."""
+    r = math.hypot(x, y)
+    return r if z >= tip else math.hypot(r, z - tip)
+
+
+def path_crushing(atoms, events, test_events, kept, tip, Dc, N, path, far, fines_top):
+    """Crushing about the tip's path: the test's events within 1 and path D_c of the path and beyond
+    far D_c of the axis, and I_G within path D_c of the path (events are the sand's history up to the
+    state of atoms, each removing 1 - kept of its mother as fines below fines_top)."""
+    near_p, near_removed = [], 0.0
+    for x, y, z, r, _, n in atoms.values():
+        if path_distance(x, y, z, tip) < path * Dc:
+            near_p.append((2 * r / (n or N), math.pi / 6 * (2 * r) ** 3))
+    for e in events:
+        if path_distance(e["x"], e["y"], e["z"], tip) < path * Dc:
+            near_removed += math.pi / 6 * e["diameter"] ** 3 * (1 - kept)
+    within = [path_distance(e["x"], e["y"], e["z"], tip) / Dc for e in test_events]
+    return {"events_path1": sum(1 for d in within if d < 1.0), "events_path2": sum(1 for d in within if d < path),
+            "events_far": sum(1 for e in test_events if math.hypot(e["x"], e["y"]) > far * Dc),
+            "I_G_path": grading(near_p, near_removed, fines_top)[1] if near_p else float("nan")}
+
+
 def smallest_fragment(atoms, N):
     """The fines' top size (downscaled): the smallest fragment of atoms, d / N with its own N where the
     dump has it, 0 where none broke."""
@@ -161,6 +189,8 @@ def main():
     parser.add_argument("--plateau", type=float, default=4.0, help="start of the plateau (D_c)")
     parser.add_argument("--zone", type=float, default=1.5, help="near-tip zone radius (D_c)")
     parser.add_argument("--far", type=float, default=3.0, help="far field: beyond this distance from the axis (D_c)")
+    parser.add_argument("--path", type=float, default=2.0, help="the zone about the tip's path: within this distance"
+                        " of the axis above the final tip and of the tip below it (D_c)")
     parser.add_argument("--chamber", help="the chamber's consolidation events (in.chamber's events_chamber_*.csv;"
                         " default: events_chamber_<the label's first word>_N<N>.csv where it exists)")
     a = parser.parse_args()
@@ -193,7 +223,9 @@ def main():
                "particles": history[-1]["particles"],
                "events_loaded": sum(1 for e in events if math.isfinite(e["force_ratio"])), "I_G_near": float("nan"), "I_G_far": float("nan"),
                "I_G_near0": float("nan"), "I_G_far0": float("nan"),
-               "grains_near": 0, "grains_far": 0, "chamber_events": len(consolidation)}
+               "grains_near": 0, "grains_far": 0, "chamber_events": len(consolidation),
+               "events_path1": float("nan"), "events_path2": float("nan"), "events_far": float("nan"),
+               "I_G_path": float("nan"), "I_G_path0": float("nan")}
         history_events = consolidation + events
         kept = kept_fraction(history_events, atoms) if history_events else 1.0
         if atoms and kept is not None:
@@ -201,9 +233,12 @@ def main():
             (near, n_near), (far, n_far) = zone_gradings(atoms, history_events, kept, tip, a.Dc, a.N, a.zone, a.far, fines_top)
             row.update({"I_G_near": near[1], "I_G_far": far[1], "grains_near": n_near, "grains_far": n_far,
                         "near": near[0], "far": far[0]})
+            row.update(path_crushing(atoms, history_events, events, kept, tip, a.Dc, a.N, a.path, a.far, fines_top))
             if atoms0:  # the same zones in the consolidated chamber, before the test
                 (near0, _), (far0, _) = zone_gradings(atoms0, consolidation, kept, tip, a.Dc, a.N, a.zone, a.far, fines_top)
-                row.update({"I_G_near0": near0[1], "I_G_far0": far0[1], "near0": near0[0]})
+                row.update({"I_G_near0": near0[1], "I_G_far0": far0[1], "near0": near0[0],
+                            "I_G_path0": path_crushing(atoms0, consolidation, [], kept, tip, a.Dc, a.N, a.path, a.far,
+                                                       fines_top)["I_G_path"]})
         row.update(rate_measures(history, plateau, a.Dc, a.N))
         summary.append(row)
 
@@ -267,7 +302,7 @@ def main():
 
     columns = ["label", "q_c_MPa", "q_c_sd_MPa", "f_s_kPa", "f_s_sd_kPa", "depth_Dc", "events", "events_loaded", "particles",
                "I_G_near", "I_G_far", "I_G_near0", "I_G_far0", "grains_near", "grains_far", "chamber_events",
-               "v", "I_tip", "I_chamber", "ke_share"]
+               "v", "I_tip", "I_chamber", "ke_share", "events_path1", "events_path2", "events_far", "I_G_path", "I_G_path0"]
     with open(os.path.join(a.dir, "penetration_%s_summary.csv" % a.out), "w") as f:
         f.write(",".join(columns) + "\n")
         for row in summary:

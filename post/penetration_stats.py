@@ -14,10 +14,14 @@ standard error; --members lists the cases of each setting; --versus A B compares
 named by patterns (fnmatch: 'refined_N34_w10_s*' against 'rate_v0.25_s*'), settings that differ in
 more than one field (D_c / d50 with the velocity that keeps the inertial number, a refined chamber
 against a uniform one): the means, their difference with the unpaired standard error (Welch) and
-whether it is resolved at 2 standard errors, and a field of the study (--field, default q_c_MPa).
+whether it is resolved at 2 standard errors, and a field of the study (--field, default q_c_MPa);
+--ratio A B gives B's mean over A's with its standard error, and each seed's own ratio where both ran
+it (the density effect: dense over loose); --fit-power FIELD the exponent of q_c against a numeric
+field (the stress exponent: log q_c against log sigma_v, a factor per seed).
 
     post/penetration_stats.py study.csv [more.csv ...] [--vary v] [--vary crushing] [--fit-log2 v]
-                              [--members] [--markdown] [--versus A B [--field q_c_MPa]]
+                              [--fit-power sigma_v] [--members] [--markdown] [--versus A B]
+                              [--ratio A B] [--field q_c_MPa]
 
 Rows without a defining column (an older study.csv) take in.cone's default for it (DEFAULTS). Two
 rows of one setting and one seed are one run (a case run under two names): the first is kept, and
@@ -122,6 +126,14 @@ def fit_log2(points):
     return len(centred), len(by_seed), slope, math.sqrt(rss / dof / sxx) if dof > 0 else float("nan")
 
 
+def ratio(first, second):
+    """The ratio of second's mean to first's, each (n, mean, sd, se), with its standard error to first
+    order (the relative errors added in quadrature)."""
+    (_, m1, _, se1), (_, m2, _, se2) = first, second
+    r = m2 / m1
+    return r, abs(r) * math.sqrt((se1 / m1) ** 2 + (se2 / m2) ** 2)
+
+
 def label(setting, skip=()):
     return " ".join("%s=%s" % (k, v) for k, v in zip(SETTING, setting) if k not in skip and (k != "extra" or v))
 
@@ -189,6 +201,51 @@ def print_fit(table, seeded, field):
                                         slope, se, field, -slope, se, resolved, runs, seeds))
 
 
+def print_power(table, seeded, field):
+    """The exponent b of q_c = a_seed x^b over the settings that differ in the numeric field x alone:
+    log2 q_c against log2 x, one intercept per seed."""
+    at = SETTING.index(field)
+    print("\nq_c against %s (the others fixed) as a power, one factor per seed: exponent, its standard error" % field)
+    for members in families(table, field):
+        points = [(r["seed"], number(m[at]), math.log2(number(r["q_c_MPa"]))) for m in members for r in seeded[m]]
+        if not all(x > 0 for _, x, _ in points):
+            continue
+        fit = fit_log2(points)
+        if fit is None:
+            continue
+        runs, seeds, slope, se = fit
+        print("%s: %s = %s: exponent %.3f +- %.3f (%d runs, %d seeds)"
+              % (label(members[0], (field,)), field, ", ".join(m[at] for m in members), slope, se, runs, seeds))
+
+
+def picked(rows, pattern, field):
+    """{seed: value of field} of the cases named by pattern (the first row of a seed kept)."""
+    kept = dict()
+    for r in rows:
+        if fnmatch.fnmatch(r["case"], pattern):
+            kept.setdefault(r["seed"], r)
+    values = dict((seed, number(r.get(field, "nan"))) for seed, r in kept.items())
+    values = dict((seed, x) for seed, x in values.items() if math.isfinite(x))
+    if not values:
+        sys.exit("penetration_stats.py: no case matches %s with a value of %s" % (pattern, field))
+    return values
+
+
+def print_ratio(rows, first, second, field):
+    """second's field over first's: the ratio of the means (unpaired) and the mean of each seed's own
+    ratio (paired, over the seeds both ran), each with its standard error, resolved from 1 at 2 se."""
+    a, b = picked(rows, first, field), picked(rows, second, field)
+    r, se = ratio(statistics(list(a.values())), statistics(list(b.values())))
+    print("\n%s: %s over %s" % (field, second, first))
+    print("  ratio of the means %.3f +- %.3f (unpaired, %d and %d seeds), resolved from 1: %s"
+          % (r, se, len(a), len(b), "yes" if abs(r - 1) > 2 * se else "no"))
+    common = [seed for seed in a if seed in b]
+    if len(common) > 1:
+        n, mean, _, se = statistics([b[seed] / a[seed] for seed in common])
+        print("  paired by seed: %.3f +- %.3f (%d seeds), resolved from 1: %s"
+              % (mean, se, n, "yes" if abs(mean - 1) > 2 * se else "no"))
+
+
 def versus(rows, first, second, field):
     """The cases named by the patterns first and second (one row per seed in each: the first of a
     seed's rows kept): (n, mean, sd, se) of field in each, and (difference second - first, its
@@ -229,7 +286,12 @@ def main():
     parser.add_argument("--markdown", action="store_true", help="tables in markdown")
     parser.add_argument("--versus", nargs=2, action="append", default=[], metavar=("A", "B"),
                         help="compare the cases named by pattern B against those of pattern A (unpaired)")
-    parser.add_argument("--field", default="q_c_MPa", help="the study's column that --versus compares (default q_c_MPa)")
+    parser.add_argument("--fit-power", action="append", default=[], choices=SETTING, metavar="FIELD",
+                        help="fit q_c as a power of this numeric field (log q_c against log FIELD, a factor per seed)")
+    parser.add_argument("--ratio", nargs=2, action="append", default=[], metavar=("A", "B"),
+                        help="the ratio of pattern B's cases to pattern A's, unpaired and paired by seed")
+    parser.add_argument("--field", default="q_c_MPa", help="the study's column that --versus and --ratio compare"
+                        " (default q_c_MPa)")
     a = parser.parse_args()
     rows = []
     for path in a.studies:
@@ -248,8 +310,12 @@ def main():
         print_changes(table, seeded, field)
     for field in a.fit_log2:
         print_fit(table, seeded, field)
+    for field in a.fit_power:
+        print_power(table, seeded, field)
     for first, second in a.versus:
         print_versus(rows, first, second, a.field)
+    for first, second in a.ratio:
+        print_ratio(rows, first, second, a.field)
 
 
 if __name__ == "__main__":

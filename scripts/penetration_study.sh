@@ -13,7 +13,8 @@
 # mu_prep=0.1). Default: every named case (the earlier study's; the groups below are named
 # explicitly). A case already in OUT_DIR/study.csv is skipped. Chambers are prepared (in.chamber: consolidated with crushing, the element tests' protocol)
 # once per (density, N, width, depth, sigma_v, seed, fragment density) in OUT_DIR/chambers and copied.
-# The case "figures" draws doc/penetration.md's figures from the cases already run
+# The case "summarise" runs post/penetration.py again in every case's folder that remains and writes
+# its crushing about the tip's path into the case's row. The case "figures" draws doc/penetration.md's figures from the cases already run
 # (OUT_DIR/figures: q_c, events and gradings of dense_region, dense_off, loose_region, loose_off; the
 # events of dense_region_1MPa and of N80_region, N80_everywhere).
 # Environment: LIGGGHTS (build/liggghts).
@@ -146,6 +147,37 @@ for k in 1 2 3; do
   spec[refined_N34_below5_s$k]=dense:34:region:$(v_at_I 34):10:2:$refined::refine=1,below=5
   group[below]+=" refined_N34_w10_s$k refined_N34_below5_s$k"
 done
+# What a geotechnical engineer would check, at D_c / d50 = 5 and 10 D_c wide (the refined chamber the
+# resolution and width studies afford): groups stress (dense, the INPG e0 = 0.62, and loose chambers
+# at 100, 200 and 400 kPa, crushing in the zone; dense at 100 kPa is the resolution group's),
+# reference (the uncrushable chambers' tests, dense at 100 and 400 kPa), pristine (chambers drawn with
+# distribution normal: no zero-strength grains, no consolidation crushing; crushing in the zone and
+# none), pile_refined (the closed-ended pile, crushing in the zone), weak_refined (grains ten times
+# weaker, sigma_lim0 = 0.5 GPa, chamber and test: crushing in the zone and none). Seeds 1 - 3 each.
+for k in 1 2 3; do
+  seed=${seeds[k-1]}
+  v=$(v_at_I 34)
+  for p in 1 2 4; do
+    for d in dense loose; do
+      name=refined_N34_${d}_${p}00kPa_s$k
+      [ "$d$p" = dense1 ] && { group[stress]+=" refined_N34_w10_s$k"; continue; }
+      spec[$name]=$d:34:region:$v:10:2:normal_clipped_originals:${p}e5:$seed:scaled:4::refine=1
+      group[stress]+=" $name"
+    done
+  done
+  for p in 1 4; do
+    spec[refined_N34_off_${p}00kPa_s$k]=dense:34:0:$v:10:2:normal_clipped_originals:${p}e5:$seed:scaled:4::refine=1
+    group[reference]+=" refined_N34_off_${p}00kPa_s$k"
+  done
+  for c in region 0; do
+    spec[refined_N34_pristine_${c}_s$k]=dense:34:$c:$v:10:2:normal:1e5:$seed:scaled:4::refine=1,distribution=normal
+    group[pristine]+=" refined_N34_pristine_${c}_s$k"
+    spec[refined_N34_weak_${c}_s$k]=dense:34:$c:$v:10:2:normal_clipped_originals:1e5:$seed:scaled:4::refine=1,sigma_lim0=5e8
+    group[weak_refined]+=" refined_N34_weak_${c}_s$k"
+  done
+  spec[refined_N34_pile_s$k]=dense:34:region:$v:10:2:normal_clipped_originals:1e5:$seed:scaled:4:tip_shape=flat,stress_every=0.5:refine=1
+  group[pile_refined]+=" refined_N34_pile_s$k"
+done
 cases=""
 for c in ${*:-$order}; do cases+=" ${group[$c]:-$c}"; done
 # The last four columns, with the spec's, tell every case apart (post/penetration_stats.py groups by
@@ -154,8 +186,13 @@ for c in ${*:-$order}; do cases+=" ${group[$c]:-$c}"; done
 # doc/penetration_study.csv, run before these columns, had them added from the case names and the
 # groups above: pile_* flat with stress_every=0.5, weak_* sigma_lim0 5e8, knob_bin_* bin, the rest
 # in.cone's defaults (cone, 5e9, multi: the runs postdate multi as in.cone's default).
-header="case,density,N,D_c_over_d50,crushing,v,width,ranks,distribution,sigma_v,seed,grains,particles,events,events_loaded,steps,seconds,q_c_MPa,q_c_sd_MPa,f_s_kPa,I_G_near,I_G_far,fragment_density,depth,I_G_near0,chamber_events,v_measured,I_tip,I_chamber,ke_share,tip_shape,sigma_lim0,neighbor_style,extra"
+header0="case,density,N,D_c_over_d50,crushing,v,width,ranks,distribution,sigma_v,seed,grains,particles,events,events_loaded,steps,seconds,q_c_MPa,q_c_sd_MPa,f_s_kPa,I_G_near,I_G_far,fragment_density,depth,I_G_near0,chamber_events,v_measured,I_tip,I_chamber,ke_share,tip_shape,sigma_lim0,neighbor_style,extra"
+# the crushing about the tip's path (post/penetration.py): a study.csv with header0 alone gains these
+# columns, its rows empty there until the case "summarise" fills them
+path_columns="events_path1,events_path2,events_far,I_G_path,I_G_path0,I_G_far0"
+header="$header0,$path_columns"
 [ -f "$out/study.csv" ] || echo "$header" > "$out/study.csv"
+[ "$(head -n 1 "$out/study.csv")" != "$header0" ] || sed -i "1s/.*/$header/" "$out/study.csv"
 [ "$(head -n 1 "$out/study.csv")" = "$header" ] || { echo "$out/study.csv: not this script's columns (an older study's, without those that tell the cases apart?): another OUT_DIR, or add them as doc/penetration_study.csv's were" >&2; exit 2; }
 # a deck's default for a variable: its 'variable NAME index VALUE' line
 default() { awk -v n="$2" '$1 == "variable" && $2 == n && $3 == "index" {print $4; exit}' "$1"; }
@@ -183,6 +220,36 @@ draw() {
   (cd "$out/figures/$tag" && "$here/post/penetration.py" --N "$n" --Dc 0.0357 --out "$tag" "$@")
 }
 for name in $cases; do
+  if [ "$name" = summarise ]; then
+    # post/penetration.py again in every case's folder that remains, its crushing about the tip's
+    # path written into the case's row (for rows of a study.csv older than those columns)
+    python3 - "$out" "$here/post/penetration.py" "$path_columns" <<'EOF'
+import csv, os, subprocess, sys
+out, script, columns = sys.argv[1], sys.argv[2], sys.argv[3].split(",")
+path = os.path.join(out, "study.csv")
+with open(path) as f:
+    reader = csv.DictReader(f)
+    fields, rows = reader.fieldnames, list(reader)
+for row in rows:
+    folder = os.path.join(out, row["case"], "penetration")
+    if not os.path.exists(os.path.join(folder, "particles_%s_N%s.liggghts" % (row["case"], row["N"]))):
+        continue
+    chamber = "events_chamber_%s_N%s.csv" % (row["density"], row["N"])
+    subprocess.run([script, "--N", row["N"], "--Dc", "0.0357", "--plateau", "%g" % (float(row["depth"]) / 2),
+                    "--out", row["case"], row["case"]] + (["--chamber", chamber] if os.path.exists(os.path.join(folder, chamber)) else []),
+                   cwd=folder, check=True, stdout=subprocess.DEVNULL)
+    with open(os.path.join(folder, "penetration_%s_summary.csv" % row["case"])) as f:
+        summary = next(csv.DictReader(f))
+    row.update((c, summary[c]) for c in columns)
+    print("== %s: %s" % (row["case"], " ".join("%s %s" % (c, row[c]) for c in columns)))
+with open(path + ".new", "w", newline="") as f:
+    writer = csv.DictWriter(f, fieldnames=fields, lineterminator="\n")
+    writer.writeheader()
+    writer.writerows(rows)
+os.replace(path + ".new", path)
+EOF
+    continue
+  fi
   if [ "$name" = figures ]; then
     draw 60 N60 dense_region dense_off loose_region loose_off
     draw 60 N60_1MPa dense_region_1MPa dense_off_1MPa
@@ -236,11 +303,12 @@ rows = list(csv.DictReader(open(sys.argv[1])))
 summary = next(csv.DictReader(open(sys.argv[2])))
 grains = int(float(open(sys.argv[3]).read().split("grains0 equal")[1].split()[0]))
 steps = int(float(re.search(r"CHECKED STEPS \\S+ OF (\\S+)", open(sys.argv[4]).read()).group(1)))
-print("$name,$density,$N,%.3f,$crushing,$v,$width,$ranks,$distribution,$sigma_v,$seed,%d,%d,%d,%s,%d,$seconds,%s,%s,%s,%s,%s,$fragment_density,$depth,%s,%s,%s,%s,%s,%s,$columns" % (
+print("$name,$density,$N,%.3f,$crushing,$v,$width,$ranks,$distribution,$sigma_v,$seed,%d,%d,%d,%s,%d,$seconds,%s,%s,%s,%s,%s,$fragment_density,$depth,%s,%s,%s,%s,%s,%s,$columns,%s" % (
     0.0357 / (0.21e-3 * $N), grains, int(float(rows[-1]["particles"])), int(float(rows[-1]["events"])),
     summary["events_loaded"], steps,
     summary["q_c_MPa"], summary["q_c_sd_MPa"], summary["f_s_kPa"], summary["I_G_near"], summary["I_G_far"],
-    summary["I_G_near0"], summary["chamber_events"], summary["v"], summary["I_tip"], summary["I_chamber"], summary["ke_share"]))
+    summary["I_G_near0"], summary["chamber_events"], summary["v"], summary["I_tip"], summary["I_chamber"], summary["ke_share"],
+    ",".join(summary[c] for c in "$path_columns".split(","))))
 EOF
   tail -n 1 "$out/study.csv"
 done

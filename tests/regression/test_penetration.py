@@ -511,7 +511,11 @@ def case_cone_resume(liggghts, work, ranks):
 
 def study_header():
     """The columns of scripts/penetration_study.sh's study.csv (its header line)."""
-    return re.search(r'^header="(case,[^"]*)"', open(STUDY).read(), re.M).group(1).split(",")
+    script = open(STUDY).read()
+    columns = [re.search(r'^%s="([^"]*)"' % name, script, re.M).group(1) for name in ("header0", "path_columns")]
+    check(re.search(r'^header="\$header0,\$path_columns"', script, re.M) is not None,
+          "penetration_study.sh's header is header0 and path_columns")
+    return ",".join(columns).split(",")
 
 
 def write_study(path, rows, drop=()):
@@ -644,6 +648,91 @@ def case_stats_versus(liggghts, work):
     check(changes == ["change +1 +- 0.163 (unpaired), resolved at 2 se",
                       "change +0 +- 0.208 (unpaired), not resolved at 2 se"],
           "b against a: %s; c against b: %s" % tuple(changes + ["?", "?"])[:2])
+
+
+def case_path_crushing(liggghts, work):
+    """post/penetration.py's crushing about the tip's path on grains and events at known places (D_c =
+    1, the final tip at z = 0): the path's distance is the radius above the tip and the distance to
+    the tip below it, so of five events at distances 0.5 (above), 1.5 (above), 1.5 (below, on the
+    axis), 0.5 (level with the tip) and 4 (beside it, beyond the far field's 3), two lie within 1, four within
+    2, one in the far field; I_G about the path is the grading of the four grains within 2 (not of the
+    one at radius 2.5, 2 below the tip: 3.2 away) with the four events' removed volume."""
+    del liggghts, work
+    sys.path.insert(0, os.path.dirname(POST))
+    import penetration  # noqa: E402
+    places = [(0.5, 0.0, 5.0), (1.5, 0.0, 2.0), (0.0, 0.0, -1.5), (0.3, 0.4, -0.0), (4.0, 0.0, 0.0), (2.5, 0.0, -2.0)]
+    distances = [penetration.path_distance(x, y, z, 0.0) for x, y, z in places]
+    check(all(abs(d - e) < 1e-12 for d, e in zip(distances, (0.5, 1.5, 1.5, 0.5, 4.0, math.hypot(2.5, 2.0)))),
+          "distances from the path %s" % distances)
+    atoms = dict((k + 1, (x, y, z, 0.1 * (k + 1), 0.0, None)) for k, (x, y, z) in enumerate(places))
+    events = [{"x": x, "y": y, "z": z, "diameter": 0.3} for x, y, z in places[:5]]
+    kept, N, fines_top = 0.53, 2.0, 0.01
+    got = penetration.path_crushing(atoms, events, events, kept, 0.0, 1.0, N, 2.0, 3.0, fines_top)
+    near = [(2 * 0.1 * k / N, math.pi / 6 * (2 * 0.1 * k) ** 3) for k in (1, 2, 3, 4)]
+    expected = penetration.grading(near, 4 * math.pi / 6 * 0.3 ** 3 * (1 - kept), fines_top)[1]
+    check((got["events_path1"], got["events_path2"], got["events_far"]) == (2, 4, 1) and abs(got["I_G_path"] - expected) < 1e-12,
+          "events within 1 and 2 D_c of the path and in the far field %s, I_G %.6f (%.6f)"
+          % ((got["events_path1"], got["events_path2"], got["events_far"]), got["I_G_path"], expected))
+
+
+def case_stats_ratio_power(liggghts, work):
+    """--ratio and --fit-power on stand-in studies of known values. Dense (2.0, 2.2, 2.4) over loose
+    (1.0, 1.2, 1.4) on the same seeds: the ratio of the means 2.2 / 1.2 = 1.833, its standard error
+    1.833 ((0.1155 / 1.2)^2 + (0.1155 / 2.2)^2)^0.5 = 0.201; each seed's own ratio (2, 1.833, 1.714)
+    1.849 +- 0.083, both resolved from 1. q_c = a_seed sigma_v^0.6 2^e at 100, 200, 400 kPa, e = (+0.1,
+    -0.2, +0.1) in each seed (orthogonal to the intercepts and to log2 sigma_v): the exponent 0.600 +-
+    0.077, as --fit-log2's slope on the same ladder."""
+    del liggghts
+    rows = [("loose_s%d" % (k + 1), seed, q, {"density": "loose"}) for k, (seed, q) in enumerate(zip(SEEDS, (1.0, 1.2, 1.4)))]
+    rows += [("dense_s%d" % (k + 1), seed, q, {}) for k, (seed, q) in enumerate(zip(SEEDS, (2.0, 2.2, 2.4)))]
+    e = {"1e5": 0.1, "2e5": -0.2, "4e5": 0.1}
+    rows += [("p%s_s%d" % (p, k + 1), seed, a * (float(p) / 1e5) ** 0.6 * 2 ** e[p], {"sigma_v": p, "crushing": "0"})
+             for k, (seed, a) in enumerate(zip(SEEDS, (1.0, 2.0, 3.0))) for p in e]
+    study = write_study(os.path.join(work, "ratio.csv"), rows)
+    _, _, rest, _ = run_stats(study, "--ratio", "loose_*", "dense_*", "--fit-power", "sigma_v")
+    text = "\n".join(rest)
+    check("ratio of the means 1.833 +- 0.201 (unpaired, 3 and 3 seeds), resolved from 1: yes" in text
+          and "paired by seed: 1.849 +- 0.083 (3 seeds), resolved from 1: yes" in text,
+          "dense over loose: 1.833 +- 0.201 unpaired, 1.849 +- 0.083 paired")
+    powers = re.findall(r"sigma_v = 1e5, 2e5, 4e5: exponent (\S+) \+- (\S+) \((\d+) runs, (\d+) seeds\)", text)
+    check(powers == [("0.600", "0.077", "9", "3")], "q_c against sigma_v: exponent, se, runs, seeds %s" % powers)
+
+
+def case_cpt_interpretation(liggghts, work):
+    """post/cpt_interpretation.py on stand-in tests of q_c 10 MPa and f_s 50 kPa. At sigma_v = p_a =
+    100 kPa Q_tn is free of n: Q_tn = 99, F_r = 50 / 9900 = 0.505 %, I_c = ((3.47 - log 99)^2 + (log
+    0.505 + 1.22)^2)^0.5 = 1.740 (zone 6, clean sand to silty sand), n = 0.381 I_c - 0.1 = 0.563,
+    D_r = ln(10000 / (157 100^0.55)) / 2.41 = 0.673 (Baldi) and ln(100 / 24.94) / 2.96 = 0.469
+    (Jamiolkowski, K = 1). At 400 kPa n is the fixed point n = 0.381 I_c + 0.05 x 4 - 0.15 with I_c of
+    Q_tn = 96 / 4^n (0.902, Q_tn 27.49, I_c 2.236: zone 5); D_r 0.356 and 0.254. Two seeds of q_c 9
+    and 11 MPa give the mean of their own values, not the values of the mean q_c."""
+    del liggghts
+    rows = [("a_s1", SEEDS[0], 10.0, {"sigma_v": "1e5", "f_s_kPa": "50"}),
+            ("b_s1", SEEDS[0], 10.0, {"sigma_v": "4e5", "f_s_kPa": "50"}),
+            ("c_s1", SEEDS[0], 9.0, {"sigma_v": "1e5", "f_s_kPa": "50", "density": "loose"}),
+            ("c_s2", SEEDS[1], 11.0, {"sigma_v": "1e5", "f_s_kPa": "50", "density": "loose"})]
+    study = write_study(os.path.join(work, "cpt.csv"), rows)
+    out = os.path.join(work, "cpt_out.csv")
+    proc = subprocess.run(["/usr/bin/python3", os.path.join(ROOT, "post", "cpt_interpretation.py"), study, "--csv", out],
+                          stdout=subprocess.PIPE, stderr=subprocess.PIPE, universal_newlines=True)
+    check(proc.returncode == 0, "post/cpt_interpretation.py ran: %s" % proc.stderr[-300:])
+    with open(out) as f:
+        table = dict((row["cases"], row) for row in csv.DictReader(f))
+    expected = {"a_s1": (99.0, 0.50505, 1.73963, 0.56280, 0.67272, 0.46915, 6),
+                "b_s1": (27.4891, 0.52083, 2.23645, 0.90209, 0.35634, 0.25372, 5)}
+    names = ("Q_tn", "F_r", "I_c", "n", "D_r_Baldi", "D_r_Jamiolkowski")
+    for case, values in expected.items():
+        got = [float(table[case][m]) for m in names] + [int(table[case]["zone"])]
+        check(all(abs(g - v) < 1e-4 * max(1.0, abs(v)) for g, v in zip(got[:-1], values[:-1])) and got[-1] == values[-1],
+              "%s: Q_tn, F_r, I_c, n, D_r (Baldi, Jamiolkowski), zone %s against %s" % (case, got, values))
+    q_tn = [(q - 100.0) / 100.0 for q in (9000.0, 11000.0)]
+    f_r = [100 * 50.0 / (q - 100.0) for q in (9000.0, 11000.0)]
+    i_c = [math.hypot(3.47 - math.log10(q), math.log10(f) + 1.22) for q, f in zip(q_tn, f_r)]
+    pair = table["c_s1;c_s2"]
+    check(abs(float(pair["Q_tn"]) - 99.0) < 1e-9 and abs(float(pair["I_c"]) - sum(i_c) / 2) < 1e-5
+          and abs(float(pair["Q_tn_se"]) - 10.0) < 1e-9,
+          "two seeds: Q_tn %s +- %s (99 +- 10), I_c %s the mean of theirs (%.6f)"
+          % (pair["Q_tn"], pair["Q_tn_se"], pair["I_c"], sum(i_c) / 2))
 
 
 if __name__ == "__main__":

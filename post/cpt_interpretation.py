@@ -1,0 +1,135 @@
+#!/usr/bin/python3
+"""What a geotechnical engineer reads from a cone penetration test: the normalised cone resistance
+Q_tn, the friction ratio F_r, the soil behaviour type index I_c and its zone, and the relative
+density that the chamber-test correlations of silica sands give, for each setting of a penetration
+study (scripts/penetration_study.sh's study.csv, the settings as post/penetration_stats.py groups
+them), with the mean and standard error over the seeds.
+
+    post/cpt_interpretation.py study.csv [more.csv ...] [--cases PATTERN] [--K 1.0] [--markdown] [--csv OUT]
+
+The chamber is dry and its vertical stress sigma_v is the top wall's: q_t = q_c, sigma_v0 = sigma'_v0
+= sigma_v, the mean stress sigma'_m = sigma_v (1 + 2 K) / 3 (in.chamber's K, 1 by default). Per test:
+  F_r  = f_s / (q_t - sigma_v0) x 100 %
+  Q_tn = ((q_t - sigma_v0) / p_a) (p_a / sigma'_v0)^n,  p_a = 100 kPa,
+         n = 0.381 I_c + 0.05 sigma'_v0 / p_a - 0.15 (at most 1), iterated with I_c to a fixed point
+  I_c  = ((3.47 - log10 Q_tn)^2 + (log10 F_r + 1.22)^2)^0.5, and its zone: 7 below 1.31 (gravelly
+         sand to dense sand), 6 to 2.05 (clean sand to silty sand), 5 to 2.60, 4 to 2.95, 3 to 3.60,
+         2 above (Robertson 2009, as the Settle3 theory manual and the groundhog library state them)
+  D_r  Baldi et al. (1986), normally consolidated Ticino sand: (1 / 2.41) ln(q_c / (157 sigma'_v0^0.55)),
+         q_c and sigma'_v0 in kPa (as the Datgel CPT Tool guide and groundhog state it)
+  D_r  Jamiolkowski et al. (2003), dry sand: (1 / 2.96) ln((q_c / p_a) / (24.94 (sigma'_m / p_a)^0.46))
+         (groundhog; the same in kPa, C0 = 300, in the BlueDrop documentation)
+D_r is printed as the correlation gives it, below 0 or above 1 too: the correlations were fitted
+over D_r of about 0.2 - 1 and stresses of 50 - 400 kPa.
+"""
+import argparse
+import csv
+import fnmatch
+import math
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import penetration_stats  # noqa: E402
+
+P_A = 100.0  # kPa
+ZONES = [(1.31, 7), (2.05, 6), (2.60, 5), (2.95, 4), (3.60, 3), (float("inf"), 2)]
+ZONE_NAMES = {7: "gravelly sand to dense sand", 6: "clean sand to silty sand", 5: "silty sand to sandy silt",
+              4: "clayey silt to silty clay", 3: "clay", 2: "organic soil"}
+
+
+def friction_ratio(q_t, f_s, sigma_v0):
+    """F_r (%) of q_t, f_s and sigma_v0 in one unit."""
+    return 100.0 * f_s / (q_t - sigma_v0)
+
+
+def index_of(q_tn, f_r):
+    """Robertson's soil behaviour type index I_c."""
+    return math.hypot(3.47 - math.log10(q_tn), math.log10(f_r) + 1.22)
+
+
+def normalised(q_t, f_s, sigma_v0, sigma_v0_eff):
+    """(Q_tn, F_r, I_c, n) of one test (kPa): n and I_c iterated to their fixed point from n = 1."""
+    f_r = friction_ratio(q_t, f_s, sigma_v0)
+    n = 1.0
+    for _ in range(100):
+        q_tn = (q_t - sigma_v0) / P_A * (P_A / sigma_v0_eff) ** n
+        i_c = index_of(q_tn, f_r)
+        n_next = min(1.0, 0.381 * i_c + 0.05 * sigma_v0_eff / P_A - 0.15)
+        if abs(n_next - n) < 1e-9:
+            break
+        n = n_next
+    return q_tn, f_r, i_c, n
+
+
+def zone(i_c):
+    return next(z for top, z in ZONES if i_c < top)
+
+
+def dr_baldi(q_c, sigma_v0_eff):
+    """D_r of Baldi et al. (1986), normally consolidated Ticino sand (kPa)."""
+    return math.log(q_c / (157.0 * sigma_v0_eff ** 0.55)) / 2.41
+
+
+def dr_jamiolkowski(q_c, sigma_m_eff):
+    """D_r of Jamiolkowski et al. (2003), dry sand, from the mean stress (kPa)."""
+    return math.log((q_c / P_A) / (24.94 * (sigma_m_eff / P_A) ** 0.46)) / 2.96
+
+
+def interpret(row, K):
+    """The measures of one study row: q_c (MPa), Q_tn, F_r (%), I_c, n, D_r by both correlations."""
+    q_c, f_s, sigma_v = float(row["q_c_MPa"]) * 1e3, float(row["f_s_kPa"]), float(row["sigma_v"]) / 1e3
+    q_tn, f_r, i_c, n = normalised(q_c, f_s, sigma_v, sigma_v)
+    return {"q_c_MPa": q_c / 1e3, "q_c_over_sigma_v": q_c / sigma_v, "Q_tn": q_tn, "F_r": f_r, "I_c": i_c, "n": n,
+            "D_r_Baldi": dr_baldi(q_c, sigma_v), "D_r_Jamiolkowski": dr_jamiolkowski(q_c, sigma_v * (1 + 2 * K) / 3)}
+
+
+MEASURES = ["q_c_MPa", "q_c_over_sigma_v", "Q_tn", "F_r", "I_c", "n", "D_r_Baldi", "D_r_Jamiolkowski"]
+
+
+def table(rows, K):
+    """[(setting, {measure: (n, mean, sd, se)}, zone of the mean I_c, cases)] per setting, one row per seed."""
+    out = []
+    for setting, members in penetration_stats.groups(rows).items():
+        values = [interpret(r, K) for r in members]
+        stats = dict((m, penetration_stats.statistics([v[m] for v in values])) for m in MEASURES)
+        out.append((setting, stats, zone(stats["I_c"][1]), [r["case"] for r in members]))
+    return out
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("studies", nargs="+", help="study.csv files of scripts/penetration_study.sh")
+    parser.add_argument("--cases", default="*", help="only the cases whose names match this pattern (fnmatch)")
+    parser.add_argument("--K", type=float, default=1.0, help="the chamber's K = sigma_h / sigma_v (in.chamber's K)")
+    parser.add_argument("--markdown", action="store_true", help="the table in markdown")
+    parser.add_argument("--csv", help="write the table here too")
+    a = parser.parse_args()
+    rows = []
+    for path in a.studies:
+        with open(path) as f:
+            rows += [r for r in csv.DictReader(f) if fnmatch.fnmatch(r["case"], a.cases)]
+    if not rows:
+        sys.exit("cpt_interpretation.py: no case matches %s in %s" % (a.cases, " ".join(a.studies)))
+    result = table(rows, a.K)
+    head = ["setting", "seeds"] + ["%s (se)" % m for m in MEASURES] + ["zone"]
+    sep = " | " if a.markdown else "  "
+    print(("| " if a.markdown else "") + sep.join(head) + (" |" if a.markdown else ""))
+    if a.markdown:
+        print("|" + "---|" * len(head))
+    for setting, stats, z, _ in result:
+        cells = [penetration_stats.label(setting), "%d" % stats["q_c_MPa"][0]]
+        cells += ["%.3g (%.2g)" % (stats[m][1], stats[m][3]) for m in MEASURES]
+        cells += ["%d (%s)" % (z, ZONE_NAMES[z])]
+        print(("| " if a.markdown else "") + sep.join(cells) + (" |" if a.markdown else ""))
+    if a.csv:
+        with open(a.csv, "w") as f:
+            f.write(",".join(["setting", "seeds", "cases"] + ["%s%s" % (m, s) for m in MEASURES for s in ("", "_se")]
+                             + ["zone"]) + "\n")
+            for setting, stats, z, cases in result:
+                f.write(",".join(['"%s"' % penetration_stats.label(setting), "%d" % stats["q_c_MPa"][0], ";".join(cases)]
+                                 + ["%.6g,%.6g" % (stats[m][1], stats[m][3]) for m in MEASURES] + ["%d" % z]) + "\n")
+
+
+if __name__ == "__main__":
+    main()
