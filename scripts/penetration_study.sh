@@ -153,7 +153,9 @@ done
 # reference (the uncrushable chambers' tests, dense at 100 and 400 kPa), pristine (chambers drawn with
 # distribution normal: no zero-strength grains, no consolidation crushing; crushing in the zone and
 # none), pile_refined (the closed-ended pile, crushing in the zone), weak_refined (grains ten times
-# weaker, sigma_lim0 = 0.5 GPa, chamber and test: crushing in the zone and none). Seeds 1 - 3 each.
+# weaker, sigma_lim0 = 0.5 GPa, chamber and test: crushing in the zone and none). Seeds 1 - 3 each;
+# everywhere_refined, crushing everywhere in the dense chamber at 100 kPa (the coarse zones' events
+# too), seed 1 (refined_N34_everywhere_s2 and _s3 run by name).
 for k in 1 2 3; do
   seed=${seeds[k-1]}
   v=$(v_at_I 34)
@@ -175,6 +177,8 @@ for k in 1 2 3; do
     spec[refined_N34_weak_${c}_s$k]=dense:34:$c:$v:10:2:normal_clipped_originals:1e5:$seed:scaled:4::refine=1,sigma_lim0=5e8
     group[weak_refined]+=" refined_N34_weak_${c}_s$k"
   done
+  spec[refined_N34_everywhere_s$k]=dense:34:1:$v:10:2:normal_clipped_originals:1e5:$seed:scaled:4::refine=1
+  [ "$k" -gt 1 ] || group[everywhere_refined]+=" refined_N34_everywhere_s$k"
   spec[refined_N34_pile_s$k]=dense:34:region:$v:10:2:normal_clipped_originals:1e5:$seed:scaled:4:tip_shape=flat,stress_every=0.5:refine=1
   group[pile_refined]+=" refined_N34_pile_s$k"
 done

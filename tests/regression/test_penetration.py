@@ -473,6 +473,34 @@ def case_cone_balance(liggghts, work, ranks):
           "%d particles at the end = %d + 13 x %d logged events, every tag unique" % (len(tags), n0, len(events)))
 
 
+@variants(*each_rank_count(2, 3))
+def case_cone_balance_z(liggghts, work, ranks):
+    """The short penetration on slabs across the axis (grid "1 1 *", doc/running.md's choice for a
+    refined chamber on many ranks) with the balancer moving the planes along z alone (balance_dims
+    z) before each stretch, on 2 and 3 ranks: the uniform slabs of the box would leave the sand to
+    the lowest ranks (the box reaches far above it, for the penetrometer); after each call the
+    fullest holds at most 5% over the mean (one plane a call moves the whole way on 2 ranks, and the
+    calls follow one another on 3), the books at every row and unique tags at the end."""
+    ranks = int(ranks)
+    folder = prepare_chamber(liggghts, work, ranks)
+    out = push(liggghts, folder, ranks, crushing="region", vtk=0, label="slabs", balance=1, balance_dims="z",
+               grid="1 1 *", progress_every=5000)
+    lines = [line for line in out.splitlines() if line.startswith("BALANCE:")]
+    check(len(lines) >= 3, "%d balance calls, one before each stretch" % len(lines))
+    after = [float(line.split("->")[1].split()[0]) for line in lines]
+    check(max(after[1:]) <= 1.05, "the fullest rank holds at most 5%% over the mean after each call but the first (%s)"
+          % ", ".join("%.3f" % a for a in after))
+    history = read_rows(os.path.join(folder, "penetration_slabs_N80.csv"))
+    n0 = grains0(folder)
+    check(all(r["particles"] == n0 + 13 * r["events"] for r in history) and history[-1]["events"] > 0,
+          "particles = %d + 13 x events at every one of %d rows (%d events)" % (n0, len(history), history[-1]["events"]))
+    events = read_rows(os.path.join(folder, "events_pen_slabs_N80.csv"))
+    _, _, atoms = read_dump(os.path.join(folder, "particles_slabs_N80.liggghts"))[0]
+    tags = [int(a["id"]) for a in atoms]
+    check(len(set(tags)) == len(tags) == n0 + 13 * len(events),
+          "%d particles at the end = %d + 13 x %d logged events, every tag unique" % (len(tags), n0, len(events)))
+
+
 @variants(*each_rank_count(1, 2))
 def case_cone_resume(liggghts, work, ranks):
     """A test killed right after a checkpoint resumes (-var resume 1) to the same history and events
