@@ -6,6 +6,7 @@ at the work's quantiles (what a balancer by work would set).
 
     post/decomposition.py STATE [STATE ...] --skin 0.00068 [--box xlo xhi ylo yhi zlo zhi]
                           [--ranks 2 4 8 ... 256] [--csv OUT.csv] [--plot OUT.png]
+    post/decomposition.py --rows OUT.csv [...] --plot OUT.png      (draw earlier rows again)
 
 A STATE is LABEL=PATH (a dump custom with id x y z radius, or a .vtu with a radius array). The box
 is the dump's (fixed boundaries: every state of a chamber has its box); a .vtu takes --box or the
@@ -33,6 +34,8 @@ from scipy.spatial import cKDTree
 
 GRIDS = {"* * 1": (None, None, 1), "1 1 *": (1, 1, None), "* * *": (None, None, None)}
 CUTS = ("uniform", "count", "work")
+COLUMNS = ["state", "particles", "ranks", "processors", "grid", "cuts", "fullest_over_mean", "emptiest_over_mean",
+           "ghosts_mean", "ghosts_max", "ghosts_over_owned", "ghosts_by_size_mean", "ghosts_by_size_max"]
 
 
 def read_state(path, box=None):
@@ -174,15 +177,80 @@ def measure(x, r, box, pairs, skin, ranks, grid, mode):
     return work.max() / mean, work.min() / mean, ghosts.mean(), ghosts.max(), ghosts.sum() / len(r), needed.mean(), needed.max()
 
 
+def write_rows(path, rows):
+    with open(path, "w", newline="") as f:
+        writer = csv.writer(f, lineterminator="\n")
+        writer.writerow(COLUMNS)
+        for row in rows:
+            writer.writerow(list(row[:6]) + ["%.4f" % row[6], "%.4f" % row[7], "%.1f" % row[8], "%d" % row[9],
+                                             "%.4f" % row[10], "%.1f" % row[11], "%d" % row[12]])
+
+
+def read_rows(path):
+    """The rows of a CSV this tool wrote (--rows: draw again without computing)."""
+    with open(path) as f:
+        return [(r["state"], int(r["particles"]), int(r["ranks"]), r["processors"], r["grid"], r["cuts"])
+                + tuple(float(r[c]) for c in COLUMNS[6:]) for r in csv.DictReader(f)]
+
+
+def draw(path, rows):
+    """Per state, the fullest rank's work over the mean (above) and the ghosts per rank over the
+    particles it owns (below: LIGGGHTS' single cutoff, and by size), against the ranks."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    states = list(dict.fromkeys(row[0] for row in rows))
+    fig, axes = plt.subplots(2, len(states), figsize=(5 * len(states), 8.5), squeeze=False, sharey="row")
+    colours = dict(zip(GRIDS, ("C0", "C1", "C2")))
+    for k, state in enumerate(states):
+        top, bottom = axes[0][k], axes[1][k]
+        for grid_name in GRIDS:
+            for cut, style in (("uniform", ":"), ("count", "--"), ("work", "-")):
+                chosen = [row for row in rows if row[0] == state and row[3] == grid_name and row[5] == cut]
+                top.loglog([row[2] for row in chosen], [row[6] for row in chosen], style, marker="o", ms=3,
+                           color=colours[grid_name], label="%s, %s cuts" % (grid_name, cut))
+            chosen = [row for row in rows if row[0] == state and row[3] == grid_name and row[5] == "work"]
+            owned = [row[1] / row[2] for row in chosen]
+            bottom.loglog([row[2] for row in chosen], [row[8] / n for row, n in zip(chosen, owned)], "-", marker="o", ms=3,
+                          color=colours[grid_name], label="%s, work cuts: single cutoff" % grid_name)
+            bottom.loglog([row[2] for row in chosen], [row[11] / n for row, n in zip(chosen, owned)], "--", marker="s", ms=3,
+                          color=colours[grid_name], label="%s, work cuts: cutoff by size" % grid_name)
+        top.set_title(state)
+        bottom.set_xlabel("ranks")
+        for ax in (top, bottom):
+            ax.grid(alpha=0.3, which="both")
+    axes[0][0].set_ylabel("fullest rank's work / mean")
+    axes[1][0].set_ylabel("ghosts per rank / particles per rank")
+    axes[0][0].legend(fontsize=7)
+    axes[1][0].legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("states", nargs="+", help="LABEL=PATH: a dump custom (id x y z radius) or a .vtu")
-    parser.add_argument("--skin", type=float, required=True, help="the deck's neighbor skin (m)")
+    parser.add_argument("states", nargs="*", help="LABEL=PATH: a dump custom (id x y z radius) or a .vtu")
+    parser.add_argument("--skin", type=float, help="the deck's neighbor skin (m)")
     parser.add_argument("--box", type=float, nargs=6, help="xlo xhi ylo yhi zlo zhi for .vtu states")
     parser.add_argument("--ranks", type=int, nargs="+", default=[2, 4, 8, 16, 32, 64, 128, 256])
     parser.add_argument("--csv", help="write the rows here")
-    parser.add_argument("--plot", help="draw the fullest rank's work over the mean against the ranks")
+    parser.add_argument("--rows", nargs="+", help="instead of states, the rows of earlier --csv files (to draw them)")
+    parser.add_argument("--plot", help="draw the fullest rank's work over the mean and the ghosts against the ranks")
     a = parser.parse_args()
+    if a.rows:
+        rows = [row for path in a.rows for row in read_rows(path)]
+    elif not a.states or a.skin is None:
+        sys.exit("decomposition.py: give states (LABEL=PATH) and --skin, or --rows CSV")
+    else:
+        rows = decompose(a)
+    if a.csv:
+        write_rows(a.csv, rows)
+    if a.plot:
+        draw(a.plot, rows)
+
+
+def decompose(a):
+    """The rows of every state, rank count, grid and cut of the command line."""
     box = tuple(zip(a.box[0::2], a.box[1::2])) if a.box else None
     rows = []
     for state in a.states:
@@ -202,34 +270,7 @@ def main():
                     print("  %4d ranks %-6s %-9s %-8s fullest %.2f emptiest %.2f ghosts %.0f (most %d, %.2f of the owned;"
                           " by size %.0f, most %d)"
                           % ((ranks, grid_name, "%dx%dx%d" % grid, rows[-1][5]) + m))
-    if a.csv:
-        with open(a.csv, "w", newline="") as f:
-            writer = csv.writer(f, lineterminator="\n")
-            writer.writerow(["state", "particles", "ranks", "processors", "grid", "cuts", "fullest_over_mean",
-                             "emptiest_over_mean", "ghosts_mean", "ghosts_max", "ghosts_over_owned", "ghosts_by_size_mean",
-                             "ghosts_by_size_max"])
-            for row in rows:
-                writer.writerow(list(row[:6]) + ["%.4f" % row[6], "%.4f" % row[7], "%.1f" % row[8], "%d" % row[9],
-                                                 "%.4f" % row[10], "%.1f" % row[11], "%d" % row[12]])
-    if a.plot:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-        states = list(dict.fromkeys(row[0] for row in rows))
-        fig, axes = plt.subplots(1, len(states), figsize=(5 * len(states), 4.5), squeeze=False, sharey=True)
-        for ax, state in zip(axes[0], states):
-            for grid_name in GRIDS:
-                for cut, style in (("uniform", ":"), ("count", "--"), ("work", "-")):
-                    chosen = [row for row in rows if row[0] == state and row[3] == grid_name and row[5] == cut]
-                    ax.loglog([row[2] for row in chosen], [row[6] for row in chosen], style, marker="o",
-                              label="%s, %s cuts" % (grid_name, cut))
-            ax.set_title(state)
-            ax.set_xlabel("ranks")
-            ax.grid(alpha=0.3, which="both")
-        axes[0][0].set_ylabel("fullest rank's work / mean")
-        axes[0][0].legend(fontsize=7)
-        fig.tight_layout()
-        fig.savefig(a.plot, dpi=120)
+    return rows
 
 
 if __name__ == "__main__":
