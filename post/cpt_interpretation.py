@@ -6,6 +6,7 @@ study (scripts/penetration_study.sh's study.csv, the settings as post/penetratio
 them), with the mean and standard error over the seeds.
 
     post/cpt_interpretation.py study.csv [more.csv ...] [--cases PATTERN] [--K 1.0] [--markdown] [--csv OUT]
+                               [--plot OUT.png]
 
 The chamber is dry and its vertical stress sigma_v is the top wall's: q_t = q_c, sigma_v0 = sigma'_v0
 = sigma_v, the mean stress sigma'_m = sigma_v (1 + 2 K) / 3 (in.chamber's K, 1 by default). Per test:
@@ -97,6 +98,38 @@ def table(rows, K):
     return out
 
 
+def draw(path, rows, K):
+    """q_c against sigma'_v, each test a point and each setting's mean with its standard error, beside
+    Baldi et al.'s (1986) q_c at D_r = 0.2, 0.5 and 0.9 (log axes: a power law is a line)."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, ax = plt.subplots(figsize=(6.5, 5))
+    stresses = [50.0 * 1.1 ** k for k in range(40) if 50.0 * 1.1 ** k < 600]
+    for d_r, style in ((0.2, ":"), (0.5, "--"), (0.9, "-.")):
+        ax.loglog(stresses, [157.0 * s ** 0.55 * math.exp(2.41 * d_r) / 1e3 for s in stresses], style, color="grey",
+                  label="Baldi et al. (1986), D_r = %.1f" % d_r)
+    colours = {}
+    for setting, stats, _, cases in table(rows, K):
+        # one colour for the settings that differ in the stress alone
+        name = penetration_stats.label(setting, skip=("sigma_v", "N", "v", "ranks", "fragment_density", "depth",
+                                                      "neighbor_style"))
+        first = name not in colours
+        colour = colours.setdefault(name, "C%d" % (len(colours) % 10))
+        members = [r for r in rows if r["case"] in cases]
+        x = [float(r["sigma_v"]) / 1e3 for r in members]
+        ax.loglog(x, [float(r["q_c_MPa"]) for r in members], "o", color=colour, alpha=0.4, ms=4)
+        ax.errorbar([x[0]], [stats["q_c_MPa"][1]], yerr=[2 * stats["q_c_MPa"][3]], fmt="s", color=colour, capsize=3,
+                    label=name if first else None)
+    ax.set_xlabel("sigma'_v (kPa)")
+    ax.set_ylabel("q_c (MPa)")
+    ax.grid(alpha=0.3, which="both")
+    ax.legend(fontsize=7)
+    ax.set_title("q_c against the vertical stress: each test, and the mean +- 2 se")
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("studies", nargs="+", help="study.csv files of scripts/penetration_study.sh")
@@ -104,6 +137,7 @@ def main():
     parser.add_argument("--K", type=float, default=1.0, help="the chamber's K = sigma_h / sigma_v (in.chamber's K)")
     parser.add_argument("--markdown", action="store_true", help="the table in markdown")
     parser.add_argument("--csv", help="write the table here too")
+    parser.add_argument("--plot", help="draw q_c against sigma'_v beside Baldi et al.'s D_r lines here")
     a = parser.parse_args()
     rows = []
     for path in a.studies:
@@ -122,6 +156,8 @@ def main():
         cells += ["%.3g (%.2g)" % (stats[m][1], stats[m][3]) for m in MEASURES]
         cells += ["%d (%s)" % (z, ZONE_NAMES[z])]
         print(("| " if a.markdown else "") + sep.join(cells) + (" |" if a.markdown else ""))
+    if a.plot:
+        draw(a.plot, rows, a.K)
     if a.csv:
         with open(a.csv, "w") as f:
             f.write(",".join(["setting", "seeds", "cases"] + ["%s%s" % (m, s) for m in MEASURES for s in ("", "_se")]
