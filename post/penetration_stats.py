@@ -31,7 +31,11 @@ import argparse
 import csv
 import fnmatch
 import math
+import os
 import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from seeds import statistics  # noqa: E402,F401  (the studies' one implementation; cpt_interpretation.py uses it here)
 
 SETTING = ["density", "N", "crushing", "v", "width", "ranks", "distribution", "sigma_v", "fragment_density", "depth",
            "tip_shape", "sigma_lim0", "neighbor_style", "extra"]
@@ -39,14 +43,6 @@ SETTING = ["density", "N", "crushing", "v", "width", "ranks", "distribution", "s
 DEFAULTS = {"tip_shape": "cone", "sigma_lim0": "5e9", "neighbor_style": "multi", "extra": ""}
 MEANS = ["q_c_MPa", "events", "events_loaded", "I_tip", "I_chamber", "ke_share", "steps", "seconds", "particles", "grains",
          "I_G_near", "I_G_near0", "chamber_events"]
-
-
-def statistics(values):
-    """(n, mean, sd, standard error) of values; sd and se are nan for one value."""
-    n = len(values)
-    mean = sum(values) / n
-    sd = math.sqrt(sum((x - mean) ** 2 for x in values) / (n - 1)) if n > 1 else float("nan")
-    return n, mean, sd, sd / math.sqrt(n) if n > 1 else float("nan")
 
 
 def number(text):
