@@ -18,7 +18,8 @@ one setting and one seed are one run counted twice: the first is kept, and a war
 Output, per setting: its seeds, and per measure the mean, sd and standard error; then per setting
 and measure the change against the reference, its standard error (unpaired: the two standard
 errors in quadrature; paired: the sd of the seeds' own differences over sqrt(seeds)), and
-"resolved" where |change| > 2 se. One seed has no standard error: "one seed", never resolved.
+"resolved" where |change| > 2 se. One seed has no standard error: "one seed", never resolved; a
+measure the reference lacks is "no reference value".
 """
 import argparse
 import csv
@@ -141,7 +142,12 @@ def main(argv=None):
                 stats, dx, se, paired = statistics(list(other.values())), float("nan"), float("nan"), None
             is_ref = key == ref
             cells = [label(setting, key), m, "%d" % stats[0], "%.4g" % stats[1], "%.3g" % stats[2], "%.3g" % stats[3]]
-            cells += ["", "", ""] if is_ref else ["%+.4g" % dx, "%.3g" % se, resolved(dx, se)]
+            if is_ref:
+                cells += ["", "", ""]
+            elif not reference:
+                cells += ["", "", "no reference value"]
+            else:
+                cells += ["%+.4g" % dx, "%.3g" % se, resolved(dx, se)]
             cells += ["", "", ""] if is_ref or paired is None else ["%+.4g" % paired[1], "%.3g" % paired[2],
                                                                   "%s (%d)" % (resolved(paired[1], paired[2]), paired[0])]
             print(("| " if a.markdown else "") + sep.join(cells) + (" |" if a.markdown else ""))
