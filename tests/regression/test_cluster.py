@@ -12,7 +12,7 @@ import sys
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from liggghts_run import check, variants  # noqa: E402
+from liggghts_run import check, each_rank_count, variants  # noqa: E402
 from liggghts_run import main as test_main  # noqa: E402
 from test_checkpoint import newest_checkpoint, read_rows  # noqa: E402
 
@@ -46,15 +46,16 @@ def history(folder):
     return [dict(zip(names, map(float, r.split(",")))) for r in rows]
 
 
-@variants(ranks=2, timeout=900)
-def case_slurm_requeue(liggghts, work):
-    """o1.slurm on 2 ranks: uninterrupted, then warned with USR1 after its second checkpoint (the job
-    stops the run, calls the requeue, exits 0) and started again: the second start says it resumes,
-    LIGGGHTS resumes from the newest checkpoint, the history has the uninterrupted job's rows (the
-    same steps, none doubled), the books hold at every row (particles = initial + 13 x events), the
-    events are the uninterrupted job's within the spread of summation orders (5% + 1), and a third
-    start finds the folder done and runs nothing."""
-    ranks = 2
+@variants(*each_rank_count(1, 2), timeout=900)
+def case_slurm_requeue(liggghts, work, ranks):
+    """o1.slurm on 1 and 2 ranks (SLURM_NTASKS): uninterrupted, then warned with USR1 after its second
+    checkpoint (the job stops the run, calls the requeue, exits 0) and started again: the second
+    start says it resumes, LIGGGHTS resumes from the newest checkpoint, the history has the
+    uninterrupted job's rows (the same steps, none doubled), the books hold at every row (particles
+    = initial + 13 x events), and a third start finds the folder done and runs nothing. On one rank
+    the history and the event log are the uninterrupted job's to the last digit; on 2 the events are
+    within the spread of summation orders (5% + 1: the sums run in another order after a resume)."""
+    ranks = int(ranks)
     whole = os.path.join(work, "whole")
     rc, out = start(job_environment(liggghts, work, whole, ranks))
     folder = os.path.join(whole, "fontainebleau")
@@ -90,6 +91,10 @@ def case_slurm_requeue(liggghts, work):
     events, ref_events = rows[-1]["events"], reference[-1]["events"]
     check(abs(events - ref_events) <= 0.05 * ref_events + 1 and ref_events > 0,
           "%d events against %d uninterrupted" % (events, ref_events))
+    if ranks == 1:
+        for name in ("history_O2.csv", "events_O2.csv"):
+            a, b = (open(os.path.join(f, name)).read() for f in (folder, kfolder))
+            check(a == b, "%s identical to the uninterrupted job's (%d lines)" % (name, a.count("\n")))
     rc, out = start(env)
     check(rc == 0 and "done already" in out, "a third start runs nothing: %s" % out.strip())
 
