@@ -110,10 +110,13 @@ def draw(path, rows, K):
         ax.loglog(stresses, [157.0 * s ** 0.55 * math.exp(2.41 * d_r) / 1e3 for s in stresses], style, color="grey",
                   label="Baldi et al. (1986), D_r = %.1f" % d_r)
     colours = {}
-    for setting, stats, _, cases in table(rows, K):
+    result = table(rows, K)
+    # the legend names the fields that tell the plotted settings apart (the stress is the axis)
+    fields = penetration_stats.SETTING
+    same = [f for k, f in enumerate(fields) if f == "sigma_v" or len({s[k] for s, _, _, _ in result}) == 1]
+    for setting, stats, _, cases in result:
         # one colour for the settings that differ in the stress alone
-        name = penetration_stats.label(setting, skip=("sigma_v", "N", "v", "ranks", "fragment_density", "depth",
-                                                      "neighbor_style"))
+        name = penetration_stats.label(setting, skip=same) or "the tests"
         first = name not in colours
         colour = colours.setdefault(name, "C%d" % (len(colours) % 10))
         members = [r for r in rows if r["case"] in cases]
@@ -124,8 +127,8 @@ def draw(path, rows, K):
     ax.set_xlabel("sigma'_v (kPa)")
     ax.set_ylabel("q_c (MPa)")
     ax.grid(alpha=0.3, which="both")
-    ax.legend(fontsize=7)
-    ax.set_title("q_c against the vertical stress: each test, and the mean +- 2 se")
+    ax.legend(fontsize=7, loc="lower right")
+    ax.set_title("q_c: each test, and the mean +- 2 se")
     fig.tight_layout()
     fig.savefig(path, dpi=120)
 
@@ -133,7 +136,8 @@ def draw(path, rows, K):
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("studies", nargs="+", help="study.csv files of scripts/penetration_study.sh")
-    parser.add_argument("--cases", default="*", help="only the cases whose names match this pattern (fnmatch)")
+    parser.add_argument("--cases", default="*", help="only the cases whose names match one of these patterns"
+                        " (fnmatch, comma-separated)")
     parser.add_argument("--K", type=float, default=1.0, help="the chamber's K = sigma_h / sigma_v (in.chamber's K)")
     parser.add_argument("--markdown", action="store_true", help="the table in markdown")
     parser.add_argument("--csv", help="write the table here too")
@@ -142,7 +146,7 @@ def main():
     rows = []
     for path in a.studies:
         with open(path) as f:
-            rows += [r for r in csv.DictReader(f) if fnmatch.fnmatch(r["case"], a.cases)]
+            rows += [r for r in csv.DictReader(f) if any(fnmatch.fnmatch(r["case"], p) for p in a.cases.split(","))]
     if not rows:
         sys.exit("cpt_interpretation.py: no case matches %s in %s" % (a.cases, " ".join(a.studies)))
     result = table(rows, a.K)
