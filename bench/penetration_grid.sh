@@ -12,6 +12,7 @@ here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 rounds=${1:-3} n=${2:-34} depth=${3:-1} ranks=${4:-2}
 liggghts=${LIGGGHTS:-$here/build/liggghts}
 source "$here/scripts/mpi_env.sh"
+source "$here/bench/rounds.sh"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cp -r "$here/examples/fontainebleau" "$here/examples/penetration" "$work/"
@@ -30,7 +31,7 @@ for round in $(seq "$rounds"); do
     seconds[$layout]=$(awk -v a="$start" -v b="$(date +%s%N)" 'BEGIN {printf "%.2f", (b - a) / 1e9}')
     steps[$layout]=$(grep -oE 'CHECKED STEPS [0-9.e+]+ OF [0-9]+' "$layout.txt" | awk '{print $5}')
   done
-  ratio=$(awk -v a="${seconds[slabs_xy]}" -v b="${seconds[slabs_z]}" 'BEGIN {printf "%.3f", a / b}')
+  ratio=$(ratio "${seconds[slabs_xy]}" "${seconds[slabs_z]}")
   step_ratio=$(awk -v a="${seconds[slabs_xy]}" -v b="${seconds[slabs_z]}" -v m="${steps[slabs_xy]}" -v n="${steps[slabs_z]}" \
                    'BEGIN {printf "%.3f", (a / m) / (b / n)}')
   ratios+=("$ratio") step_ratios+=("$step_ratio")
@@ -38,8 +39,5 @@ for round in $(seq "$rounds"); do
        "${seconds[slabs_z]} s (${steps[slabs_z]} steps): time ratio $ratio, per step $step_ratio"
   grep '^BALANCE:' slabs_z.txt | tail -1 | sed 's/^/  last balance call: /'
 done
-median() { sort -g | awk -v what="$1" '{r[NR] = $1} END {
-  m = (NR % 2) ? r[(NR + 1) / 2] : (r[NR / 2] + r[NR / 2 + 1]) / 2
-  printf "\"* * 1\" over \"1 1 *\" balanced, %s: median %.3f of %d rounds (range %.3f - %.3f)\n", what, m, NR, r[1], r[NR] }'; }
-printf '%s\n' "${ratios[@]}" | median "whole test"
-printf '%s\n' "${step_ratios[@]}" | median "per step"
+summary '"* * 1" over "1 1 *" balanced, the whole test' "${ratios[@]}"
+summary '"* * 1" over "1 1 *" balanced, per step' "${step_ratios[@]}"

@@ -180,17 +180,24 @@ def print_changes(table, seeded, field):
                       % (mean, se, "yes" if math.isfinite(se) and abs(mean) > 2 * se else "no", n))
 
 
-def print_fit(table, seeded, field):
+def fits(table, seeded, field, power=False):
+    """(members, runs, seeds, slope, se) of each family of settings that differ in the numeric field x
+    alone: q_c (or, with power, log2 q_c) against log2 x, one intercept per seed."""
     at = SETTING.index(field)
-    print("\nq_c against log2 %s (the others fixed), one intercept per seed: slope, its standard error" % field)
+    y = (lambda q: math.log2(q)) if power else (lambda q: q)  # noqa: E731
     for members in families(table, field):
-        points = [(r["seed"], number(m[at]), number(r["q_c_MPa"])) for m in members for r in seeded[m]]
+        points = [(r["seed"], number(m[at]), y(number(r["q_c_MPa"]))) for m in members for r in seeded[m]]
         if not all(x > 0 for _, x, _ in points):
             continue
         fit = fit_log2(points)
-        if fit is None:
-            continue
-        runs, seeds, slope, se = fit
+        if fit is not None:
+            yield (members,) + fit
+
+
+def print_fit(table, seeded, field):
+    at = SETTING.index(field)
+    print("\nq_c against log2 %s (the others fixed), one intercept per seed: slope, its standard error" % field)
+    for members, runs, seeds, slope, se in fits(table, seeded, field):
         resolved = "yes" if math.isfinite(se) and abs(slope) > 2 * se else "no"
         print("%s: %s = %s: %+.3f +- %.3f MPa per doubling of %s (%+.3f +- %.3f per halving), resolved: %s"
               " (%d runs, %d seeds)" % (label(members[0], (field,)), field, ", ".join(m[at] for m in members),
@@ -202,14 +209,7 @@ def print_power(table, seeded, field):
     log2 q_c against log2 x, one intercept per seed."""
     at = SETTING.index(field)
     print("\nq_c against %s (the others fixed) as a power, one factor per seed: exponent, its standard error" % field)
-    for members in families(table, field):
-        points = [(r["seed"], number(m[at]), math.log2(number(r["q_c_MPa"]))) for m in members for r in seeded[m]]
-        if not all(x > 0 for _, x, _ in points):
-            continue
-        fit = fit_log2(points)
-        if fit is None:
-            continue
-        runs, seeds, slope, se = fit
+    for members, runs, seeds, slope, se in fits(table, seeded, field, power=True):
         print("%s: %s = %s: exponent %.3f +- %.3f (%d runs, %d seeds)"
               % (label(members[0], (field,)), field, ", ".join(m[at] for m in members), slope, se, runs, seeds))
 

@@ -441,6 +441,20 @@ def case_cone_adaptive(liggghts, work, ranks):
     check(events > 0 and logs["adaptive"] == logs["1"], "every adaptive: the same %d events as every 1" % events)
 
 
+def check_balanced_books(folder, label):
+    """A balanced push's books: particles = grains + 13 x events at every history row (some events),
+    and at the end as many particles as the event log makes, every tag unique."""
+    history = read_rows(os.path.join(folder, "penetration_%s_N80.csv" % label))
+    n0 = grains0(folder)
+    check(all(r["particles"] == n0 + 13 * r["events"] for r in history) and history[-1]["events"] > 0,
+          "particles = %d + 13 x events at every one of %d rows (%d events)" % (n0, len(history), history[-1]["events"]))
+    events = read_rows(os.path.join(folder, "events_pen_%s_N80.csv" % label))
+    _, _, atoms = read_dump(os.path.join(folder, "particles_%s_N80.liggghts" % label))[0]
+    tags = [int(a["id"]) for a in atoms]
+    check(len(set(tags)) == len(tags) == n0 + 13 * len(events),
+          "%d particles at the end = %d + 13 x %d logged events, every tag unique" % (len(tags), n0, len(events)))
+
+
 @variants(*each_rank_count(2, 3, 4))
 def case_cone_balance(liggghts, work, ranks):
     """The short penetration with the shift balancer before each stretch (balance, doc/balance.txt)
@@ -462,15 +476,7 @@ def case_cone_balance(liggghts, work, ranks):
         # more than two slabs along x move one hop a call; a 2 x 2 grid cannot even out four quarters
         check(all(a <= b + 1e-12 for a, b in zip(after, before)) and after[-1] < before[-1] + 1e-12,
               "no call leaves the fullest processor fuller (%s)" % ", ".join("%.3f->%.3f" % p for p in zip(before, after)))
-    history = read_rows(os.path.join(folder, "penetration_balanced_N80.csv"))
-    n0 = grains0(folder)
-    check(all(r["particles"] == n0 + 13 * r["events"] for r in history) and history[-1]["events"] > 0,
-          "particles = %d + 13 x events at every one of %d rows (%d events)" % (n0, len(history), history[-1]["events"]))
-    events = read_rows(os.path.join(folder, "events_pen_balanced_N80.csv"))
-    _, _, atoms = read_dump(os.path.join(folder, "particles_balanced_N80.liggghts"))[0]
-    tags = [int(a["id"]) for a in atoms]
-    check(len(set(tags)) == len(tags) == n0 + 13 * len(events),
-          "%d particles at the end = %d + 13 x %d logged events, every tag unique" % (len(tags), n0, len(events)))
+    check_balanced_books(folder, "balanced")
 
 
 @variants(*each_rank_count(2, 3))
@@ -490,15 +496,7 @@ def case_cone_balance_z(liggghts, work, ranks):
     after = [float(line.split("->")[1].split()[0]) for line in lines]
     check(max(after[1:]) <= 1.05, "the fullest rank holds at most 5%% over the mean after each call but the first (%s)"
           % ", ".join("%.3f" % a for a in after))
-    history = read_rows(os.path.join(folder, "penetration_slabs_N80.csv"))
-    n0 = grains0(folder)
-    check(all(r["particles"] == n0 + 13 * r["events"] for r in history) and history[-1]["events"] > 0,
-          "particles = %d + 13 x events at every one of %d rows (%d events)" % (n0, len(history), history[-1]["events"]))
-    events = read_rows(os.path.join(folder, "events_pen_slabs_N80.csv"))
-    _, _, atoms = read_dump(os.path.join(folder, "particles_slabs_N80.liggghts"))[0]
-    tags = [int(a["id"]) for a in atoms]
-    check(len(set(tags)) == len(tags) == n0 + 13 * len(events),
-          "%d particles at the end = %d + 13 x %d logged events, every tag unique" % (len(tags), n0, len(events)))
+    check_balanced_books(folder, "slabs")
 
 
 @variants(*each_rank_count(1, 2))
