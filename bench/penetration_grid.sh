@@ -17,7 +17,7 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cp -r "$here/examples/fontainebleau" "$here/examples/penetration" "$work/"
 cd "$work/penetration"
-vars=(-var N "$n" -var refine 1 -var depth "$depth" -var crushing region -var vtk 0 -var checkpoint_every 0)
+vars=(-var N "$n" -var refine 1 -var depth "$depth" -var vtk 0 -var checkpoint_every 0)
 mpirun -np "$ranks" "$liggghts" -in in.chamber "${vars[@]}" -log chamber.log > chamber.txt 2>&1 || { tail -5 chamber.txt; exit 1; }
 grep '^CHAMBER .* N = ' chamber.txt
 declare -A grid=([slabs_xy]="* * 1" [slabs_z]="1 1 *") balance=([slabs_xy]=0 [slabs_z]=1)
@@ -26,7 +26,7 @@ for round in $(seq "$rounds"); do
   declare -A seconds=() steps=()
   for layout in slabs_xy slabs_z; do
     start=$(date +%s%N)
-    mpirun -np "$ranks" "$liggghts" -in in.cone "${vars[@]}" -var label "$layout" -var grid "${grid[$layout]}" \
+    mpirun -np "$ranks" "$liggghts" -in in.cone "${vars[@]}" -var crushing region -var label "$layout" -var grid "${grid[$layout]}" \
       -var balance "${balance[$layout]}" -var balance_dims z -log "$layout.log" > "$layout.txt" 2>&1 || { tail -5 "$layout.txt"; exit 1; }
     seconds[$layout]=$(awk -v a="$start" -v b="$(date +%s%N)" 'BEGIN {printf "%.2f", (b - a) / 1e9}')
     steps[$layout]=$(grep -oE 'CHECKED STEPS [0-9.e+]+ OF [0-9]+' "$layout.txt" | awk '{print $5}')

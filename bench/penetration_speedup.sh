@@ -17,7 +17,7 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cp -r "$here/examples/fontainebleau" "$here/examples/penetration" "$work/"
 cd "$work/penetration"
-vars=(-var N "$n" -var width "$width" -var depth "$depth" -var crushing region -var v 2 -var vtk 0 -var checkpoint_every 0)
+vars=(-var N "$n" -var width "$width" -var depth "$depth" -var v 2 -var vtk 0 -var checkpoint_every 0)
 mpirun -np 2 "$liggghts" -in in.chamber "${vars[@]}" -log chamber.log > chamber.txt 2>&1 || { tail -5 chamber.txt; exit 1; }
 grep '^CHAMBER .* N = ' chamber.txt
 ratios=() step_ratios=()
@@ -25,7 +25,7 @@ for round in $(seq "$rounds"); do
   declare -A seconds=() steps=()
   for ranks in 1 2; do
     start=$(date +%s%N)
-    mpirun -np "$ranks" "$liggghts" -in in.cone "${vars[@]}" -var label "np$ranks" -log "cone$ranks.log" > "cone$ranks.txt" 2>&1 \
+    mpirun -np "$ranks" "$liggghts" -in in.cone "${vars[@]}" -var crushing region -var label "np$ranks" -log "cone$ranks.log" > "cone$ranks.txt" 2>&1 \
       || { tail -5 "cone$ranks.txt"; exit 1; }
     seconds[$ranks]=$(awk -v a="$start" -v b="$(date +%s%N)" 'BEGIN {printf "%.2f", (b - a) / 1e9}')
     steps[$ranks]=$(grep -oE 'CHECKED STEPS [0-9.e+]+ OF [0-9]+' "cone$ranks.txt" | awk '{print $5}')
