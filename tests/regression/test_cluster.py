@@ -6,6 +6,7 @@ events are those of an uninterrupted job (O-2 to 2 MPa, a checkpoint every 300 s
 
   python3 test_cluster.py LIGGGHTS WORKDIR CASE"""
 import os
+import shutil
 import signal
 import subprocess
 import sys
@@ -56,6 +57,8 @@ def case_slurm_requeue(liggghts, work, ranks):
     the history and the event log are the uninterrupted job's to the last digit; on 2 the events are
     within the spread of summation orders (5% + 1: the sums run in another order after a resume)."""
     ranks = int(ranks)
+    for folder in ("whole", "killed"):  # an earlier run's folders would be resumed, or found done
+        shutil.rmtree(os.path.join(work, folder), ignore_errors=True)
     whole = os.path.join(work, "whole")
     rc, out = start(job_environment(liggghts, work, whole, ranks))
     folder = os.path.join(whole, "fontainebleau")
