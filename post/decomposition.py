@@ -159,19 +159,22 @@ def ghosts_per_rank(x, r, owner, planes, skin):
     return np.array(out), np.array(needed)
 
 
-def measure(x, r, box, pairs, skin, ranks, grid, mode):
-    """(the fullest rank's work / mean, the emptiest's / mean, mean ghosts, most ghosts, ghosts over
-    owned particles, mean and most ghosts a cutoff by size would send) of one decomposition."""
+def pairs_per_particle(pairs, count):
+    """Each particle's neighbour pairs (its work weight)."""
     i, j = pairs
-    per_particle = np.bincount(i, minlength=len(r)) + np.bincount(j, minlength=len(r))
-    planes, parts = [], grid
-    for k in range(3):
-        planes.append(cuts(x[:, k], per_particle.astype(float), box[k][0], box[k][1], parts[k], mode))
+    return (np.bincount(i, minlength=count) + np.bincount(j, minlength=count)).astype(float)
+
+
+def measure(x, r, box, pairs, weight, skin, ranks, grid, mode):
+    """(the fullest rank's work / mean, the emptiest's / mean, mean ghosts, most ghosts, ghosts over
+    owned particles, mean and most ghosts a cutoff by size would send) of one decomposition; weight is
+    pairs_per_particle(pairs)."""
+    i, j = pairs
+    planes = [cuts(x[:, k], weight, box[k][0], box[k][1], grid[k], mode) for k in range(3)]
     owner = assign(x, planes)
-    n = ranks
     inside = owner[i] == owner[j]
-    work = np.bincount(owner[i][inside], minlength=n).astype(float)
-    work += np.bincount(owner[i][~inside], minlength=n) + np.bincount(owner[j][~inside], minlength=n)
+    work = np.bincount(owner[i][inside], minlength=ranks).astype(float)
+    work += np.bincount(owner[i][~inside], minlength=ranks) + np.bincount(owner[j][~inside], minlength=ranks)
     ghosts, needed = ghosts_per_rank(x, r, owner, planes, skin)
     mean = work.mean()
     return work.max() / mean, work.min() / mean, ghosts.mean(), ghosts.max(), ghosts.sum() / len(r), needed.mean(), needed.max()
@@ -259,13 +262,14 @@ def decompose(a):
         name, path = state.split("=", 1)
         x, r, box = read_state(path, box)
         pairs = neighbour_pairs(x, r, a.skin)
+        weight = pairs_per_particle(pairs, len(r))
         print("%s: %d particles, %d neighbour pairs (%.1f a particle), ghost cutoff %.4g m"
               % (name, len(r), len(pairs[0]), 2.0 * len(pairs[0]) / len(r), 2 * r.max() + a.skin))
         for ranks in a.ranks:
             for grid_name, fixed in GRIDS.items():
                 grid = grid_for(ranks, fixed, box)
                 for mode in CUTS:
-                    m = measure(x, r, box, pairs, a.skin, ranks, grid, mode)
+                    m = measure(x, r, box, pairs, weight, a.skin, ranks, grid, mode)
                     rows.append((name, len(r), ranks, grid_name, "%dx%dx%d" % grid, mode) + m)
                     print("  %4d ranks %-6s %-9s %-8s fullest %.2f emptiest %.2f ghosts %.0f (most %d, %.2f of the owned;"
                           " by size %.0f, most %d)"

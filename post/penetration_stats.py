@@ -35,7 +35,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from seeds import statistics  # noqa: E402,F401  (the studies' one implementation; cpt_interpretation.py uses it here)
+from seeds import number, statistics  # noqa: E402,F401  (the studies' one implementation; cpt_interpretation.py uses it here)
 
 SETTING = ["density", "N", "crushing", "v", "width", "ranks", "distribution", "sigma_v", "fragment_density", "depth",
            "tip_shape", "sigma_lim0", "neighbor_style", "extra"]
@@ -43,13 +43,6 @@ SETTING = ["density", "N", "crushing", "v", "width", "ranks", "distribution", "s
 DEFAULTS = {"tip_shape": "cone", "sigma_lim0": "5e9", "neighbor_style": "multi", "extra": ""}
 MEANS = ["q_c_MPa", "events", "events_loaded", "I_tip", "I_chamber", "ke_share", "steps", "seconds", "particles", "grains",
          "I_G_near", "I_G_near0", "chamber_events"]
-
-
-def number(text):
-    try:
-        return float(text)
-    except (TypeError, ValueError):
-        return float("nan")
 
 
 def setting_of(row):
@@ -246,20 +239,9 @@ def versus(rows, first, second, field):
     """The cases named by the patterns first and second (one row per seed in each: the first of a
     seed's rows kept): (n, mean, sd, se) of field in each, and (difference second - first, its
     unpaired standard error)."""
-    picked = []
-    for pattern in (first, second):
-        members = [r for r in rows if fnmatch.fnmatch(r["case"], pattern)]
-        kept = dict()
-        for r in members:
-            kept.setdefault(r["seed"], r)
-        values = [number(r.get(field, "nan")) for r in kept.values()]
-        values = [x for x in values if math.isfinite(x)]
-        if not values:
-            sys.exit("penetration_stats.py: --versus: no case matches %s with a value of %s" % (pattern, field))
-        picked.append(statistics(values))
-    (n1, m1, _, se1), (n2, m2, _, se2) = picked
+    (n1, m1, s1, se1), (n2, m2, s2, se2) = (statistics(list(picked(rows, p, field).values())) for p in (first, second))
     se = math.sqrt(se1 ** 2 + se2 ** 2) if n1 > 1 and n2 > 1 else float("nan")
-    return picked, (m2 - m1, se)
+    return [(n1, m1, s1, se1), (n2, m2, s2, se2)], (m2 - m1, se)
 
 
 def print_versus(rows, first, second, field):
