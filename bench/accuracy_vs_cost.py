@@ -34,8 +34,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "post"))
-import plot  # noqa: E402
+sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+from post import plot  # noqa: E402
 
 PAPER_PFC3D_MINUTES = {1304: 31.0, 3084: 67.0, 10397: 183.0}  # Table 3, O-2, O-1.5, O-1, one core
 GRID = np.logspace(math.log10(2e5), 8, 60)
@@ -96,6 +96,8 @@ def load(folder):
         # runs made before these knobs existed: step updated every step, the fourteen fragments, no limit
         "dt_every": int(setting["dt_every"][0]) if "dt_every" in setting else 1,
         "layout": str(setting["layout"][0]) if "layout" in setting else "fourteen",
+        "fragment_density": str(setting["fragment_density"][0]) if "fragment_density" in setting else "true",
+        "seed": str(setting["seed"][0]) if "seed" in setting else "15485863",
         "finished": int(setting["finished"][0]) if "finished" in setting else 1,
         "sigma_end_MPa": float(history["sigma_z"][-1]) / 1e6,
         "checked_percent": 100.0 * int(checked.group(1)) / int(checked.group(2)) if checked else float("nan"),
@@ -126,7 +128,7 @@ def errors(run, ref, suffix=""):
 
 def is_base(r):
     return (r["L_R"] == 0.1 and r["dmin_mm"] == 0.05 and r["dt_fraction"] == 0.5 and r["crush_every"] == "1"
-            and r["dt_every"] == 1 and r["layout"] == "fourteen")
+            and r["dt_every"] == 1 and r["layout"] == "fourteen" and r["fragment_density"] == "true")
 
 
 ERRORS = ["err_porosity", "err_K0", "err_gsd_percent", "err_I_G", "err_yield_relative", "err_events_relative"]

@@ -1,7 +1,8 @@
 # Install and package the liggghts executable with the plugin compiled in.
 #
-#   cmake --install build                  # to the prefix (default ~/.local): bin/liggghts-crush and
-#                                          # bin/liggghts, doc pages and examples under share/
+#   cmake --install build                  # to the prefix (default ~/.local): bin/liggghts-crush,
+#                                          # bin/liggghts and the post-processing commands bin/crush-*,
+#                                          # doc pages, examples and post/ under share/
 #   cd build && cpack -G DEB               # liggghts-crush_<version>_<arch>.deb: /usr/bin/liggghts-crush
 #
 # The binary is liggghts-crush everywhere, so it can sit beside Debian's own 'liggghts' package
@@ -20,10 +21,8 @@ install(PROGRAMS "$<TARGET_FILE:liggghts>" DESTINATION "${CMAKE_INSTALL_BINDIR}"
         COMPONENT runtime)
 install(DIRECTORY "${PROJECT_SOURCE_DIR}/examples/" DESTINATION "${_share}/examples" COMPONENT runtime
         FILES_MATCHING PATTERN "in.*" PATTERN "*.py" PATTERN "*.stl")
-install(PROGRAMS "${PROJECT_SOURCE_DIR}/post/plot.py" "${PROJECT_SOURCE_DIR}/post/summary.py"
-                 "${PROJECT_SOURCE_DIR}/post/penetration.py" "${PROJECT_SOURCE_DIR}/post/critical_state.py"
-        DESTINATION "${_share}/post" COMPONENT runtime)
-install(FILES "${PROJECT_SOURCE_DIR}/post/paper.py" DESTINATION "${_share}/post" COMPONENT runtime)
+# post/ as a package under share/, and its commands (crush-summary, ...) beside the binary.
+include(${CMAKE_CURRENT_LIST_DIR}/PostTools.cmake)
 install(FILES "${PROJECT_SOURCE_DIR}/README.md" DESTINATION "${_doc}" COMPONENT runtime)
 install(DIRECTORY "${PROJECT_SOURCE_DIR}/doc/" DESTINATION "${_doc}" COMPONENT runtime
         PATTERN "*.csv" EXCLUDE)

@@ -43,7 +43,14 @@ import argparse
 import csv
 import itertools
 import math
+import os
 import sys
+
+if not __package__:  # run as a file (python3 post/chamber_profiles.py): the folder above post/ holds the package
+    sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+from post import requires  # noqa: E402
+
+requires("chamber_profiles", "numpy", "scipy")
 
 import numpy as np
 from scipy.spatial import cKDTree
@@ -304,6 +311,7 @@ def print_table(rows, Dc, interfaces, jumps):
 
 
 def plot(path, rows, Dc, interfaces):
+    requires("chamber_profiles", "matplotlib")
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt

@@ -30,8 +30,9 @@ import math
 import os
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import penetration_stats  # noqa: E402
+if not __package__:  # run as a file (python3 post/cpt_interpretation.py): the folder above post/ holds the package
+    sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+from post import penetration_stats, requires  # noqa: E402
 
 P_A = 100.0  # kPa
 ZONES = [(1.31, 7), (2.05, 6), (2.60, 5), (2.95, 4), (3.60, 3), (float("inf"), 2)]
@@ -101,6 +102,7 @@ def table(rows, K):
 def draw(path, rows, K):
     """q_c against sigma'_v, each test a point and each setting's mean with its standard error, beside
     Baldi et al.'s (1986) q_c at D_r = 0.2, 0.5 and 0.9 (log axes: a power law is a line)."""
+    requires("cpt_interpretation", "matplotlib")
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt

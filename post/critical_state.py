@@ -36,6 +36,12 @@ import os
 import re
 import sys
 
+if not __package__:  # run as a file (python3 post/critical_state.py): the folder above post/ holds the package
+    sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+from post import requires  # noqa: E402
+
+requires("critical_state", "numpy")
+
 import numpy as np
 
 KEPT_FOURTEEN = 0.52386  # share of a mother's volume its fourteen fragments keep (doc/fix_crush.txt)
@@ -358,6 +364,7 @@ def markdown(tests, fitted, window):
 
 
 def figures(tests, fitted, out):
+    requires("critical_state", "matplotlib")
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt

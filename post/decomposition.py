@@ -27,7 +27,14 @@ rank's own largest grain can reach it: r_j + r_own + skin from the subdomain).
 """
 import argparse
 import csv
+import os
 import sys
+
+if not __package__:  # run as a file (python3 post/decomposition.py): the folder above post/ holds the package
+    sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+from post import requires  # noqa: E402
+
+requires("decomposition", "numpy", "scipy")
 
 import numpy as np
 from scipy.spatial import cKDTree
@@ -41,6 +48,7 @@ COLUMNS = ["state", "particles", "ranks", "processors", "grid", "cuts", "fullest
 def read_state(path, box=None):
     """(positions (n, 3), radii (n,), box ((lo, hi) x 3)) of a dump custom or a .vtu."""
     if path.endswith(".vtu"):
+        requires("decomposition", "vtk")
         import vtk
         from vtk.util.numpy_support import vtk_to_numpy
         reader = vtk.vtkXMLUnstructuredGridReader()
@@ -199,6 +207,7 @@ def read_rows(path):
 def draw(path, rows):
     """Per state, the fullest rank's work over the mean (above) and the ghosts per rank over the
     particles it owns (below: LIGGGHTS' single cutoff, and by size), against the ranks."""
+    requires("decomposition", "matplotlib")
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt

@@ -36,6 +36,12 @@ import math
 import os
 import sys
 
+if not __package__:  # run as a file (python3 post/penetration.py): the folder above post/ holds the package
+    sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+from post import requires  # noqa: E402
+
+requires("penetration", "matplotlib")
+
 import matplotlib
 
 matplotlib.use("Agg")
@@ -72,14 +78,16 @@ def read_dump(path):
 
 
 def tip_at(history, step):
-    """z of the tip at a step, interpolated in the history (tip_z column)."""
+    """The tip's z at a step, interpolated between the history's rows (tip_z column), and extrapolated
+    from the last two rows past the last one (events after it, up to output_every steps, happen
+    deeper; a snapshot after it sees the tip deeper). The one tip_at of post/ (pile_stress.py uses it)."""
     if step <= history[0]["step"]:
         return history[0]["tip_z"]
     for a, b in zip(history, history[1:]):
         if a["step"] <= step <= b["step"]:
-            w = (step - a["step"]) / (b["step"] - a["step"])
-            return a["tip_z"] + w * (b["tip_z"] - a["tip_z"])
-    return history[-1]["tip_z"]
+            return a["tip_z"] + (step - a["step"]) / (b["step"] - a["step"]) * (b["tip_z"] - a["tip_z"])
+    a, b = history[-2], history[-1]
+    return b["tip_z"] + (step - b["step"]) / (b["step"] - a["step"]) * (b["tip_z"] - a["tip_z"])
 
 
 def kept_fraction(events, atoms):

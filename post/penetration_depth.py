@@ -14,8 +14,9 @@ import math
 import os
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from seeds import statistics  # noqa: E402
+if not __package__:  # run as a file (python3 post/penetration_depth.py): the folder above post/ holds the package
+    sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+from post.seeds import statistics  # noqa: E402
 
 
 def binned(path, width, end):

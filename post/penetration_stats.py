@@ -34,8 +34,9 @@ import math
 import os
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from seeds import number, statistics  # noqa: E402,F401  (the studies' one implementation; cpt_interpretation.py uses it here)
+if not __package__:  # run as a file (python3 post/penetration_stats.py): the folder above post/ holds the package
+    sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+from post.seeds import number, statistics  # noqa: E402,F401  (the studies' one implementation; cpt_interpretation.py uses it here)
 
 SETTING = ["density", "N", "crushing", "v", "width", "ranks", "distribution", "sigma_v", "fragment_density", "depth",
            "tip_shape", "sigma_lim0", "neighbor_style", "extra"]

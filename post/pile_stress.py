@@ -22,25 +22,19 @@ import math
 import os
 import sys
 
+if not __package__:  # run as a file (python3 post/pile_stress.py): the folder above post/ holds the package
+    sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+from post import requires  # noqa: E402
+
+requires("pile_stress", "matplotlib")
+
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from ring_stress import read_snapshots, ring_stresses, stress_particles  # noqa: E402
-
-
-def tip_at(history, step):
-    """The tip's z at a step, interpolated in the history (extrapolated past its ends)."""
-    rows = [(r["step"], r["tip_z"]) for r in history]
-    if step <= rows[0][0]:
-        return rows[0][1]
-    for (s0, z0), (s1, z1) in zip(rows, rows[1:]):
-        if s0 <= step <= s1:
-            return z0 + (step - s0) / (s1 - s0) * (z1 - z0)
-    (s0, z0), (s1, z1) = rows[-2], rows[-1]
-    return z1 + (step - s1) / (s1 - s0) * (z1 - z0)
+from post.penetration import tip_at  # noqa: E402
+from post.ring_stress import read_snapshots, ring_stresses, stress_particles  # noqa: E402
 
 
 def averaged_rings(snapshots, Dc, start, dr, dh):
@@ -81,7 +75,7 @@ def main(argv):
     if len(dirs) != len(labels):
         raise SystemExit("pile_stress: --dir gives %d folders for %d labels (one, or one per label)" % (len(dirs), len(labels)))
     out = os.path.join(dirs[0], a.out or labels[0])
-    snapshots, used, R = [], 0, a.Dc / 2
+    snapshots, used = [], 0
     rings = {}
     for label, folder in zip(labels, dirs):
         dump = os.path.join(folder, "stress_%s_N%s.liggghts" % (label, n_label))

@@ -22,6 +22,12 @@ import os
 import re
 import sys
 
+if not __package__:  # run as a file (python3 post/plot.py): the folder above post/ holds the package
+    sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+from post import requires  # noqa: E402
+
+requires("plot", "matplotlib")
+
 import matplotlib
 
 matplotlib.use("Agg")

@@ -12,8 +12,9 @@ import os
 import re
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from paper import TABLE3  # noqa: E402
+if not __package__:  # run as a file (python3 post/summary.py): the folder above post/ holds the package
+    sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+from post.paper import TABLE3  # noqa: E402
 
 HISTORY = re.compile(r"history_([OI])([0-9.]+)\.csv$")
 STATE = re.compile(r"^STATE at (\S+) MPa: (\S+) particles, (\S+) events, porosity (\S+), I_G (\S+)", re.M)

@@ -10,7 +10,7 @@ import os
 import subprocess
 import sys
 
-from liggghts_run import check, main, variants
+from liggghts_run import check, main
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(os.path.dirname(HERE))
@@ -20,8 +20,8 @@ SYNTHETIC = os.path.join(REPO, "examples", "calibration", "synthetic.csv")
 TRUE = {"sigma_lim0": 1e9, "cv": 0.25, "weibull_m": 10.0, "d0": 1.4e-3}
 PYTHON = "/usr/bin/python3" if os.path.exists("/usr/bin/python3") else sys.executable
 
-sys.path.insert(0, os.path.join(REPO, "post"))
-import calibrate  # noqa: E402
+sys.path.insert(0, REPO)
+from post.calibration import moduli, oedometer, strength, summary  # noqa: E402
 
 
 def calibrate_cli(*args, cwd=None):
@@ -49,15 +49,15 @@ def case_strength_conversion(liggghts, work):
     d = 0.2 mm, E = 7.8 GPa, nu = 0.3 on 210 GPa, 0.29, sigma = 1e8 Pa)."""
     E_eff = 1.0 / ((1.0 - 0.3 ** 2) / 7.8e9 + (1.0 - 0.29 ** 2) / 210e9)
     F_deck = (1e8 * math.pi) ** 3 * (3.0 * 0.0001 / (4.0 * E_eff)) ** 2
-    check(abs(calibrate.effective_modulus(7.8e9, 0.3, 210e9, 0.29) / E_eff - 1) < 1e-14, "E' is eq. 4's")
-    check(abs(calibrate.force_from_strength(1e8, 2e-4, E_eff) / F_deck - 1) < 1e-12,
+    check(abs(strength.effective_modulus(7.8e9, 0.3, 210e9, 0.29) / E_eff - 1) < 1e-14, "E' is eq. 4's")
+    check(abs(strength.force_from_strength(1e8, 2e-4, E_eff) / F_deck - 1) < 1e-12,
           "F_lim(sigma_lim = 1e8 Pa) = the deck's %.6g N" % F_deck)
-    check(abs(calibrate.strength_from_force(F_deck, 2e-4, E_eff) / 1e8 - 1) < 1e-12,
+    check(abs(strength.strength_from_force(F_deck, 2e-4, E_eff) / 1e8 - 1) < 1e-12,
           "that force gives back sigma_lim = 1e8 Pa")
     # the strength grows as F^(1/3) and as r'^(-2/3) (a wrong r', e.g. d instead of d/2, is off by 2^(2/3))
-    s1 = calibrate.strength_from_force(8.0, 1e-3, E_eff)
-    check(abs(calibrate.strength_from_force(64.0, 1e-3, E_eff) / s1 - 2.0) < 1e-12, "sigma_lim ~ F^(1/3)")
-    check(abs(s1 / calibrate.strength_from_force(8.0, 8e-3, E_eff) - 4.0) < 1e-12, "sigma_lim ~ d^(-2/3)")
+    s1 = strength.strength_from_force(8.0, 1e-3, E_eff)
+    check(abs(strength.strength_from_force(64.0, 1e-3, E_eff) / s1 - 2.0) < 1e-12, "sigma_lim ~ F^(1/3)")
+    check(abs(s1 / strength.strength_from_force(8.0, 8e-3, E_eff) - 4.0) < 1e-12, "sigma_lim ~ d^(-2/3)")
 
 
 def case_round_trip(liggghts, work):
@@ -97,17 +97,17 @@ def case_summary_exact(liggghts, work):
     3 m_t, whose mean is k F_0^(1/3) Gamma(1 + 1/(3 m_t)) and cv sqrt(G2/G1^2 - 1), checked against
     eq. 5's inversion of a million drawn forces; sigma_0 = F_0/d^2 reads as F_0."""
     import numpy as np
-    E_eff = calibrate.effective_modulus(*calibrate.DEFAULT_GRAIN, *calibrate.DEFAULT_PLATEN)
+    E_eff = strength.effective_modulus(*strength.DEFAULT_GRAIN, *strength.DEFAULT_PLATEN)
     c = {"d": np.array([1e-3]), "n": np.array([30]), "m_t": np.array([2.5]), "F_0": np.array([40.0]),
          "E_eff": np.array([E_eff])}
-    mean, cv = calibrate.class_strengths(c)
+    mean, cv = summary.class_strengths(c)
     F = np.random.default_rng(3).weibull(2.5, 1000000) * 40.0
-    s = calibrate.strength_from_force(F, 1e-3, E_eff)
+    s = strength.strength_from_force(F, 1e-3, E_eff)
     check(abs(mean[0] / s.mean() - 1) < 1e-3 and abs(cv[0] / (s.std() / s.mean()) - 1) < 5e-3,
           "mean %.5g Pa and cv %.4f against the draws' %.5g and %.4f" % (mean[0], cv[0], s.mean(), s.std() / s.mean()))
     path = os.path.join(work, "sigma0.csv")
     open(path, "w").write("d,n,m_t,sigma_0\n1e-3,30,2.5,4e7\n2e-3,30,2.5,2e7\n")
-    read = calibrate.read_summary(path)
+    read = summary.read_summary(path)
     check(np.allclose(read["F_0"], [40.0, 80.0]), "sigma_0 = F_0 / d^2: F_0 %s N" % read["F_0"])
 
 
@@ -155,18 +155,18 @@ def case_moduli(liggghts, work):
     of a strength ratio, against F_lim of fix crush's own size effect at two sizes; Table 1 in the
     same terms (cv 1 is the exponential: m_t = 1/3); the published file's numbers; bad rows named."""
     import numpy as np
-    E_eff = calibrate.effective_modulus(*calibrate.DEFAULT_GRAIN, *calibrate.DEFAULT_PLATEN)
-    s = calibrate.strength_from_force(np.random.default_rng(5).weibull(2.0, 1000000) * 30.0, 1e-3, E_eff)
-    cv = float(calibrate.strength_cv(6.0))
+    E_eff = strength.effective_modulus(*strength.DEFAULT_GRAIN, *strength.DEFAULT_PLATEN)
+    s = strength.strength_from_force(np.random.default_rng(5).weibull(2.0, 1000000) * 30.0, 1e-3, E_eff)
+    cv = float(strength.strength_cv(6.0))
     check(abs(cv / (s.std() / s.mean()) - 1) < 5e-3, "m_t = 2: cv %.4f against the draws' %.4f" % (cv, s.std() / s.mean()))
-    check(abs(calibrate.strength_cv(1.0) - 1.0) < 1e-12 and abs(calibrate.m_t_of_cv(1.0) - 1.0 / 3.0) < 1e-9,
+    check(abs(strength.strength_cv(1.0) - 1.0) < 1e-12 and abs(moduli.m_t_of_cv(1.0) - 1.0 / 3.0) < 1e-9,
           "cv 1 is a Weibull of modulus 1 (the exponential): m_t = 1/3")
     # fix crush's size effect with weibull_m = 10: F_lim at two sizes, then F/d^2's ratio read back
     d_small, d_large = 0.05e-3, 20e-3
-    F = [calibrate.force_from_strength(5e9 * (d / 2e-3) ** (-0.3), d, E_eff) for d in (d_small, d_large)]
+    F = [strength.force_from_strength(5e9 * (d / 2e-3) ** (-0.3), d, E_eff) for d in (d_small, d_large)]
     ratio = (F[0] / d_small ** 2) / (F[1] / d_large ** 2)
-    check(abs(calibrate.weibull_m_of_ratio(ratio, d_small, d_large) - 10.0) < 1e-9
-          and abs(calibrate.ratio_of_weibull_m(10.0, d_small, d_large) / ratio - 1) < 1e-12,
+    check(abs(moduli.weibull_m_of_ratio(ratio, d_small, d_large) - 10.0) < 1e-9
+          and abs(moduli.ratio_of_weibull_m(10.0, d_small, d_large) / ratio - 1) < 1e-12,
           "the F/d^2 ratio %.4g of weibull_m = 10 over %g - %g m reads back as 10" % (ratio, d_small, d_large))
     published = os.path.join(REPO, "examples", "calibration", "published_moduli.csv")
     out = os.path.join(work, "moduli")
@@ -219,7 +219,7 @@ def case_bad_data(liggghts, work):
     e = bad_data(work, "one_size.csv", "d,F_f\n" + rows([1e-3], 30))
     check("one size class" in e, "a single size class cannot give a size effect")
     e = bad_data(work, "few.csv", "d,F_f\n" + rows([1e-3, 2e-3], 7))
-    check("14 grains: too few" in e and "at least %d" % calibrate.MIN_GRAINS in e, "too few grains in all")
+    check("14 grains: too few" in e and "at least %d" % strength.MIN_GRAINS in e, "too few grains in all")
     e = bad_data(work, "thin_class.csv", "d,F_f\n" + rows([1e-3, 2e-3], 10) + rows([3e-3], 3))
     check("size class 0.003" in e and "3 grains" in e, "a class of too few grains is named")
 
@@ -229,7 +229,7 @@ def case_yield_and_slope(liggghts, work):
     import numpy as np
     s = np.geomspace(1e5, 1e8, 60)
     e = np.where(s < 1e7, 0.7 - 0.01 * np.log10(s / 1e5), 0.68 - 0.3 * np.log10(s / 1e7))
-    y, c = calibrate.yield_and_slope(s, e, (3e5, 3e6), (5e7, 1e8))
+    y, c = oedometer.yield_and_slope(s, e, (3e5, 3e6), (5e7, 1e8))
     check(abs(y / 1e7 - 1) < 1e-9 and abs(c + 0.3) < 1e-9, "yield 1e7 Pa and slope -0.3: %g, %g" % (y, c))
 
 
@@ -334,8 +334,8 @@ def case_dem_constant(liggghts, work):
     its size, through the size effect (d/d0)^(-3/m), to 1%."""
     result, fit, _ = dem_check(liggghts, work, 3, "constant")
     for c in result["classes"]:
-        F = calibrate.force_from_strength(fit["sigma_lim0"] * calibrate.size_factor(c["d"], fit["d0"], fit["weibull_m"]),
-                                          c["d"], fit["E_eff"])
+        F = strength.force_from_strength(fit["sigma_lim0"] * strength.size_factor(c["d"], fit["d0"], fit["weibull_m"]),
+                                         c["d"], fit["E_eff"])
         check(abs(c["dem_median_N"] / F - 1) < 0.01, "d = %g m: DEM F_f %.4g N = F_lim %.4g N" % (c["d"], c["dem_median_N"], F))
 
 

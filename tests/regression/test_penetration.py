@@ -22,6 +22,9 @@ from liggghts_run import read_dump  # noqa: E402
 from test_checkpoint import kill_after  # noqa: E402
 from test_vtk import has_vtk_dumps  # noqa: E402
 
+sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))))
+from post.penetration import tip_at  # noqa: E402  (the one tip_at: the test reads events as the tool does)
+
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 SCRIPT = os.path.join(ROOT, "examples", "penetration", "penetrometer.py")
 DECK = os.path.join(os.path.dirname(os.path.abspath(__file__)), "penetration", "in.push")
@@ -346,18 +349,6 @@ def read_rows(path, numeric=True):
     with open(path) as f:
         rows = list(csv.DictReader(f))
     return [dict((k, float(v)) for k, v in row.items()) for row in rows] if numeric else rows
-
-
-def tip_at(history, step):
-    """The tip's z at a step, interpolated between the history's rows (extrapolated from the last two
-    past the last row: events after it, up to output_every steps, happen deeper)."""
-    for a, b in zip(history, history[1:]):
-        if a["step"] <= step <= b["step"]:
-            return a["tip_z"] + (step - a["step"]) / (b["step"] - a["step"]) * (b["tip_z"] - a["tip_z"])
-    if step < history[0]["step"]:
-        return history[0]["tip_z"]
-    a, b = history[-2], history[-1]
-    return b["tip_z"] + (step - b["step"]) / (b["step"] - a["step"]) * (b["tip_z"] - a["tip_z"])
 
 
 def grains0(folder):

@@ -1,0 +1,75 @@
+#!/usr/bin/env python3
+"""post/ as a package (post/__init__.py): every tool of TOOLS runs from another folder, as a file and
+as a module, and under a Python without the modules it needs it stops with a message that names the
+interpreter, the missing module and the command to use instead (no liggghts needed). The installed
+commands: test_install.py's prefix case.
+
+  python3 test_post.py LIGGGHTS WORKDIR CASE"""
+import os
+import subprocess
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from liggghts_run import check  # noqa: E402
+from liggghts_run import main as test_main  # noqa: E402
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+sys.path.insert(0, ROOT)
+from post import TOOLS  # noqa: E402
+
+# The module each tool cannot start without (None: the standard library is enough for --help).
+NEEDS = {"calibrate": "numpy", "chamber_profiles": "numpy", "cpt_interpretation": None, "critical_state": "numpy",
+         "decomposition": "numpy", "penetration": "matplotlib", "penetration_depth": None,
+         "penetration_stats": None, "pile_stress": "matplotlib", "plot": "matplotlib", "ring_stress": None,
+         "seeds": None, "summary": None}
+
+
+def run(args, cwd, env=None):
+    proc = subprocess.run(args, cwd=cwd, env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                          universal_newlines=True)
+    return proc.returncode, proc.stdout, proc.stderr
+
+
+def elsewhere(work):
+    folder = os.path.join(work, "elsewhere")
+    os.makedirs(folder, exist_ok=True)
+    return folder
+
+
+def case_tools_any_folder(liggghts, work):
+    """Every tool's --help, from a folder outside the repository: as a file (python3 /.../post/X.py)
+    and as a module of the package (python3 -m post.X with the repository on PYTHONPATH)."""
+    check(sorted(NEEDS) == sorted(TOOLS.values()), "the test knows every tool of TOOLS (%s)" % sorted(TOOLS.values()))
+    cwd = elsewhere(work)
+    env = dict(os.environ, PYTHONPATH=ROOT)
+    for command, module in sorted(TOOLS.items()):
+        rc, out, err = run([sys.executable, os.path.join(ROOT, "post", module + ".py"), "--help"], cwd)
+        check(rc == 0 and "usage:" in out, "%s: post/%s.py --help from another folder (%s)" % (command, module, err[-300:]))
+        rc, out, err = run([sys.executable, "-m", "post." + module, "--help"], cwd, env)
+        check(rc == 0 and "usage:" in out, "%s: python3 -m post.%s --help (%s)" % (command, module, err[-300:]))
+
+
+def case_missing_module(liggghts, work):
+    """Under a Python that cannot import numpy, scipy or matplotlib (this one with -S: no site
+    packages), a tool that needs them exits with status 1 and says which interpreter ran it, which
+    module is missing, and which command to use: the Python that has them (this one, started
+    normally) with the tool's file, and the installed command. The others still run."""
+    cwd = elsewhere(work)
+    for command, module in sorted(TOOLS.items()):
+        tool = os.path.join(ROOT, "post", module + ".py")
+        rc, out, err = run([sys.executable, "-S", tool, "--help"], cwd)
+        if NEEDS[module] is None:
+            check(rc == 0 and "usage:" in out, "%s runs without site packages (%s)" % (module, err[-300:]))
+            continue
+        check(rc == 1 and "Traceback" not in err, "%s: exit status 1 and no traceback (%d: %s)" % (module, rc, err[-300:]))
+        check("this Python (%s, %d.%d)" % (sys.executable, sys.version_info[0], sys.version_info[1]) in err,
+              "%s names the interpreter" % module)
+        check("no module named '%s'" % NEEDS[module] in err, "%s names the missing module %s" % (module, NEEDS[module]))
+        check("Run it with the Python that has them: %s %s" % (sys.executable, tool) in err
+              or "Run it with the Python that has them: /usr/bin/python3 %s" % tool in err,
+              "%s says which Python to use" % module)
+        check(command in err, "%s names the installed command %s" % (module, command))
+
+
+if __name__ == "__main__":
+    test_main(globals(), sys.argv[1:])
