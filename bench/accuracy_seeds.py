@@ -42,14 +42,19 @@ KNOBS = ["N", "L_R", "dmin_mm", "dt_fraction", "dt_every", "crush_every", "layou
 ERRORS = ["err_porosity", "err_K0", "err_gsd_percent", "err_I_G", "err_events_relative", "err_yield_relative"]
 MEASURES = ["n_1MPa", "n_10MPa", "n_100MPa", "K0_mean", "I_G_10MPa", "I_G_100MPa", "events_per_grain", "yield_MPa"]
 BASE = "N2"
-REFERENCE = "reference"  # --reference NAME: another setting in its place (a preview before the reference ran)
+REFERENCE = "N1"  # N = 1 at the base's knobs; --reference NAME: another setting in its place
 
 
 def at(history, column, stress):
-    """The column at a vertical stress (Pa), interpolated against log(stress)."""
+    """The column at a vertical stress (Pa), interpolated against log(stress); at the last row where
+    the run ended within 2% below it (the last history row of a run to 100 MPa is at 99 - 99.7 MPa)."""
     s, v = history["sigma_z"], history[column]
     order = np.argsort(s)
-    return float(np.interp(math.log(stress), np.log(s[order]), v[order], left=np.nan, right=np.nan))
+    log_s, v = np.log(s[order]), v[order]
+    x = math.log(stress)
+    if log_s[-1] < x <= log_s[-1] + math.log(1.02):
+        return float(v[-1])
+    return float(np.interp(x, log_s, v, left=np.nan, right=np.nan))
 
 
 def measures(run):

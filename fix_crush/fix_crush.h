@@ -95,6 +95,7 @@ class FixCrush : public Fix {
   void discard_strengths();
   void update_strength_terms();
   void check_time_step(double smallest_radius) const;
+  void advise_neighbor_multi();
   double smallest_possible_radius() const;
   double smallest_radius() const;
   std::vector<Event> gather_events(const std::vector<int> &local_mothers);
@@ -192,6 +193,7 @@ class FixCrush : public Fix {
   bool recording_;                   // the recorder is attached (with 'every' > 1: on check steps only)
   bigint restart_step_;              // the step of the restart file this run continues (-1: none)
   bool log_opened_;                  // open_log() ran (at the first init)
+  bool multi_advised_;               // advise_neighbor_multi() has spoken
   bool redraw_pending_;              // 'redraw yes': the first setup discards the restart's strengths
 };
 

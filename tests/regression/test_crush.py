@@ -126,6 +126,26 @@ def case_single_grain_every(liggghts, work):
           % (ratios[every], applied, ratios[1]))
 
 
+def case_neighbor_advice(liggghts, work):
+    """A deck on 'neighbor ... bin' whose radii will spread past 4:1 (grains of 0.1 mm radius, the
+    fourteen fragments' smallest 1 - b = 0.2301 of their mother's radius at dmin 0.02 mm: 1e-4 /
+    (0.2301 x 1e-5) = 43:1) is told once, over two runs, that style multi finds the same pairs; not
+    on style multi, and not where nothing can break (dmin 1 mm: the grains alone, 1:1)."""
+    deck = os.path.join(CRUSH, "in.neighbor_advice")
+    advice = "'neighbor SKIN multi' finds the same pairs"
+    a, r1 = 2 - math.sqrt(2), math.sqrt(2) - 1
+    s = 1 + r1
+    b = (s * s - a * a) / (2 * s - 2 * a / math.sqrt(3))  # the layout's corner fragments: radius (1 - b) R
+    for style, dmin, times in (("bin", "2e-5", 1), ("multi", "2e-5", 0), ("bin", "1e-3", 0)):
+        out = run_deck(liggghts, deck, os.path.join(work, "%s_%s" % (style, dmin)), {"style": style, "dmin": dmin})
+        lines = [l for l in out.splitlines() if advice in l]
+        check(len(lines) == times, "style %s, dmin %s: the advice %d time(s) (%d)" % (style, dmin, times, len(lines)))
+        if times:
+            smallest = (1 - b) * 0.5 * float(dmin)
+            check("(%.0f:1)" % (1e-4 / smallest) in lines[0] and "from 0.0001 m to %g m" % smallest in lines[0],
+                  "the spread it names, 0.1 mm to the smallest fragment at dmin (%.0f:1): %s" % (1e-4 / smallest, lines[0]))
+
+
 @variants(ranks=4)
 def case_single_grain_ranks(liggghts, work):
     """The single-grain case on 1, 2 and 4 ranks (the grain sits on the processor boundary): the
