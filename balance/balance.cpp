@@ -14,7 +14,10 @@
 #include "crush_shift_cuts.h"
 #include "domain.h"
 #include "error.h"
+#include "force.h"
+#include "neigh_list.h"
 #include "neighbor.h"
+#include "pair.h"
 #include "update.h"
 
 using namespace LAMMPS_NS;
@@ -41,8 +44,12 @@ void Balance::fail(const std::string &what) const
 void Balance::command(int narg, char **arg)
 {
   if (domain->box_exist == 0) fail("the box must exist first");
-  if (narg != 5 || strcmp(arg[1], "shift") != 0)
-    fail("expected 'balance thresh shift dimstr niter stopthresh' (e.g. 'balance 1.05 shift x 20 1.02')");
+  if ((narg != 5 && narg != 7) || strcmp(arg[1], "shift") != 0)
+    fail("expected 'balance thresh shift dimstr niter stopthresh [weight neighbors]' (e.g. 'balance 1.05 shift x "
+         "20 1.02')");
+  if (narg == 7 && (strcmp(arg[5], "weight") != 0 || strcmp(arg[6], "neighbors") != 0))
+    fail(std::string("expected 'weight neighbors' after stopthresh, got '") + arg[5] + " " + arg[6] + "'");
+  by_work_ = narg == 7;
   bool ok = false;
   const double thresh = number(arg[0], 1.0, ok);
   if (!ok) fail(std::string("thresh expects a number >= 1 (the largest count over the mean), got '") + arg[0] + "'");
@@ -57,6 +64,7 @@ void Balance::command(int narg, char **arg)
   const double stop = number(arg[4], 1.0, ok);
   if (!ok) fail(std::string("stopthresh expects a number >= 1, got '") + arg[4] + "'");
   if (domain->triclinic) fail("a triclinic box is not supported");
+  find_weights();
 
   const double before = crush::imbalance(counts_per_processor());
   double after = before;
@@ -85,6 +93,39 @@ void Balance::command(int narg, char **arg)
   report(before, after, moved);
 }
 
+// Each local particle's weight: 1, or with 'weight neighbors' 1 + its neighbour pairs, what the pair
+// loop does for it. The granular lists are half lists with newton off: a pair of two local particles
+// is stored once and counts for both; a pair with a ghost is stored (and computed) on both processors
+// and counts for the local one on each. So a processor's weights sum to its particles + 2 x its own
+// pairs + its pairs across: the pairs it computes, its own ones twice. The lists are the last run's.
+void Balance::find_weights()
+{
+  const int nlocal = atom->nlocal;
+  weight_.assign(nlocal, 1.0);
+  if (by_work_) {
+    NeighList *list = force->pair ? force->pair->list : nullptr;
+    bigint listed = list ? list->inum : 0, listed_all = 0, natoms = 0, n = nlocal;
+    MPI_Allreduce(&listed, &listed_all, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+    MPI_Allreduce(&n, &natoms, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+    // the lists of the run before hold every particle (a run since the last creation or deletion)
+    if (!list || listed_all != natoms)
+      fail("'weight neighbors' weighs each particle by the neighbour pairs of the run before: run (e.g. 'run 0') "
+           "after creating or reading the particles, then balance");
+    for (int ii = 0; ii < list->inum; ii++) {
+      const int i = list->ilist[ii];
+      const int *neighbours = list->firstneigh[i];
+      if (i < nlocal) weight_[i] += list->numneigh[i];
+      for (int k = 0; k < list->numneigh[i]; k++) {
+        const int j = neighbours[k] & NEIGHMASK;
+        if (j < nlocal) weight_[j] += 1.0;
+      }
+    }
+  }
+  double local = 0.0;
+  for (double w : weight_) local += w;
+  MPI_Allreduce(&local, &total_weight_, 1, MPI_DOUBLE, MPI_SUM, world);
+}
+
 double *Balance::split(int dim) const
 {
   return dim == 0 ? comm->xsplit : (dim == 1 ? comm->ysplit : comm->zsplit);
@@ -98,7 +139,7 @@ std::vector<double> Balance::counts_below(int dim, const std::vector<double> &cu
   for (int i = 0; i < atom->nlocal; i++) {
     const double f = (atom->x[i][dim] - lo) / length;
     for (std::size_t k = 0; k < cuts.size(); k++)
-      if (f < cuts[k]) local[k] += 1.0;
+      if (f < cuts[k]) local[k] += weight_[i];
   }
   MPI_Allreduce(local.data(), all.data(), static_cast<int>(local.size()), MPI_DOUBLE, MPI_SUM, world);
   return all;
@@ -115,7 +156,7 @@ std::vector<double> Balance::counts_per_processor() const
       const double *s = split(d);
       while (loc[d] + 1 < comm->procgrid[d] && f >= s[loc[d] + 1]) loc[d]++;
     }
-    local[comm->grid2proc[loc[0]][loc[1]][loc[2]]] += 1.0;
+    local[comm->grid2proc[loc[0]][loc[1]][loc[2]]] += weight_[i];
   }
   MPI_Allreduce(local.data(), all.data(), comm->nprocs, MPI_DOUBLE, MPI_SUM, world);
   return all;
@@ -126,7 +167,7 @@ void Balance::shift(int dim, int halvings)
   double *s = split(dim);
   const int slabs = comm->procgrid[dim];
   const std::vector<double> old(s, s + slabs + 1);
-  const double total = static_cast<double>(atom->natoms);
+  const double total = total_weight_;
   // a slab at least as wide as the ghost cutoff (at most half the mean width)
   const double width = std::min(comm->cutghostuser > 0.0 ? comm->cutghostuser : neighbor->cutneighmax,
                                 0.5 * domain->prd[dim] / slabs) / domain->prd[dim];
@@ -168,7 +209,8 @@ void Balance::report(double before, double after, const std::string &axes) const
 {
   if (comm->me != 0) return;
   char line[512];
-  int n = snprintf(line, sizeof(line), "BALANCE: imbalance %.4f -> %.4f (largest count over the mean)", before, after);
+  int n = snprintf(line, sizeof(line), "BALANCE: imbalance %.4f -> %.4f (largest %s over the mean)", before, after,
+                   by_work_ ? "work, particles + neighbour pairs," : "count");
   for (int d = 0; d < domain->dimension; d++) {
     if (comm->procgrid[d] < 2) continue;
     n += snprintf(line + n, sizeof(line) - n, ", %c cuts", 'x' + d);

@@ -2,8 +2,10 @@
    liggghts-crush: balance, a shift balancer between runs (LIGGGHTS 3.8.0 has no balance command).
    See doc/balance.txt.
 
-   balance thresh shift dimstr niter stopthresh
+   balance thresh shift dimstr niter stopthresh [weight neighbors]
      thresh: rebalance only if the fullest processor holds more than thresh times the mean count
+       (the mean work with 'weight neighbors': each particle weighs 1 + its neighbour pairs, the
+       pair loop's work, from the lists of the run before)
      dimstr: the axes whose cuts move (x, y, z in any order), each once, in that order
      niter: bisection steps per cut (resolution 2^-niter of its span)
      stopthresh: the axes after the one that brings the imbalance to stopthresh or below are left
@@ -37,12 +39,17 @@ class Balance : protected Pointers {
 
  private:
   double *split(int dim) const;
+  void find_weights();
   std::vector<double> counts_below(int dim, const std::vector<double> &cuts) const;
   std::vector<double> counts_per_processor() const;
   void shift(int dim, int halvings);
   void migrate();
   void report(double before, double after, const std::string &axes) const;
   void fail(const std::string &what) const;  // error->all, naming the command
+
+  std::vector<double> weight_;  // per local particle: 1, or 1 + its neighbour pairs (weight neighbors)
+  double total_weight_ = 0.0;   // over all processors
+  bool by_work_ = false;
 };
 
 }  // namespace LAMMPS_NS
