@@ -490,6 +490,24 @@ def case_cone_balance_z(liggghts, work, ranks):
     check_balanced_books(folder, "slabs")
 
 
+@variants(ranks=2)
+def case_cone_balance_work(liggghts, work):
+    """The short penetration on slabs across the axis balanced along z by work (balance_weight 1:
+    'weight neighbors', each particle 1 + its neighbour pairs) before each stretch, on 2 ranks: every
+    call weighs by work, leaves the fuller rank at most 5% over the mean work after the first, and the
+    books hold at every row with unique tags."""
+    folder = prepare_chamber(liggghts, work, 2)
+    out = push(liggghts, folder, 2, crushing="region", vtk=0, label="work", balance=1, balance_dims="z",
+               balance_weight=1, grid="1 1 *", progress_every=5000)
+    lines = [line for line in out.splitlines() if line.startswith("BALANCE:")]
+    check(len(lines) >= 3 and all("largest work" in line for line in lines),
+          "%d balance calls, one before each stretch, each by work" % len(lines))
+    after = [float(line.split("->")[1].split()[0]) for line in lines]
+    check(max(after[1:]) <= 1.05, "the fuller rank's work at most 5%% over the mean after each call but the first (%s)"
+          % ", ".join("%.3f" % a for a in after))
+    check_balanced_books(folder, "work")
+
+
 @variants(*each_rank_count(1, 2))
 def case_cone_resume(liggghts, work, ranks):
     """A test killed right after a checkpoint resumes (-var resume 1) to the same history and events
