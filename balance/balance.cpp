@@ -4,8 +4,10 @@
 #include "balance.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <unordered_map>
 
 #include "atom.h"
 #include "comm.h"
@@ -14,10 +16,7 @@
 #include "crush_shift_cuts.h"
 #include "domain.h"
 #include "error.h"
-#include "force.h"
-#include "neigh_list.h"
 #include "neighbor.h"
-#include "pair.h"
 #include "update.h"
 
 using namespace LAMMPS_NS;
@@ -93,37 +92,53 @@ void Balance::command(int narg, char **arg)
   report(before, after, moved);
 }
 
-// Each local particle's weight: 1, or with 'weight neighbors' 1 + its neighbour pairs, what the pair
-// loop does for it. The granular lists are half lists with newton off: a pair of two local particles
-// is stored once and counts for both; a pair with a ghost is stored (and computed) on both processors
-// and counts for the local one on each. So a processor's weights sum to its particles + 2 x its own
-// pairs + its pairs across: the pairs it computes, its own ones twice. The lists are the last run's.
+// Each local particle's weight: 1, or with 'weight neighbors' 1 + its neighbours, the particles (own
+// or ghost) closer than r_i + r_j + skin: the pairs the granular lists hold, which the pair loop
+// works through. A pair of two local particles counts for both, a pair with a ghost (computed on
+// both processors, newton off) for the local one on each: a processor's weights sum to its
+// particles + 2 x its own pairs + its pairs across. Counted from the current positions on a grid of
+// cells (not from the lists, whose indices a checkpoint's or a balance's exchange leaves stale).
+// Ghosts are current after a run or a checkpoint and absent after read_restart or an exchange:
+// then the pairs across processors go uncounted, a small part of the work.
 void Balance::find_weights()
 {
   const int nlocal = atom->nlocal;
   weight_.assign(nlocal, 1.0);
-  if (by_work_) {
-    NeighList *list = force->pair ? force->pair->list : nullptr;
-    bigint listed = list ? list->inum : 0, listed_all = 0, natoms = 0, n = nlocal;
-    MPI_Allreduce(&listed, &listed_all, 1, MPI_LMP_BIGINT, MPI_SUM, world);
-    MPI_Allreduce(&n, &natoms, 1, MPI_LMP_BIGINT, MPI_SUM, world);
-    // the lists of the run before hold every particle (a run since the last creation or deletion)
-    if (!list || listed_all != natoms)
-      fail("'weight neighbors' weighs each particle by the neighbour pairs of the run before: run (e.g. 'run 0') "
-           "after creating or reading the particles, then balance");
-    for (int ii = 0; ii < list->inum; ii++) {
-      const int i = list->ilist[ii];
-      const int *neighbours = list->firstneigh[i];
-      if (i < nlocal) weight_[i] += list->numneigh[i];
-      for (int k = 0; k < list->numneigh[i]; k++) {
-        const int j = neighbours[k] & NEIGHMASK;
-        if (j < nlocal) weight_[j] += 1.0;
-      }
-    }
-  }
+  if (by_work_) count_neighbours();
   double local = 0.0;
   for (double w : weight_) local += w;
   MPI_Allreduce(&local, &total_weight_, 1, MPI_DOUBLE, MPI_SUM, world);
+}
+
+// weight_[i] += the particles closer than r_i + r_j + skin, each local i against local and ghosts.
+void Balance::count_neighbours()
+{
+  const int nlocal = atom->nlocal, nall = atom->nlocal + atom->nghost;
+  const double *const *x = atom->x;
+  const double *radius = atom->radius;
+  const double skin = neighbor->skin;
+  double rmax = 0.0;
+  for (int i = 0; i < nall; i++) rmax = std::max(rmax, radius[i]);
+  const double cell = std::max(2.0 * rmax + skin, 1e-300);
+  auto index = [&](const double *p, int d) { return static_cast<long long>(std::floor((p[d] - domain->boxlo[d]) / cell)); };
+  auto key = [](long long a, long long b, long long c) { return ((a + (1 << 20)) << 42) | ((b + (1 << 20)) << 21) | (c + (1 << 20)); };
+  std::unordered_map<long long, std::vector<int>> cells;
+  for (int j = 0; j < nall; j++) cells[key(index(x[j], 0), index(x[j], 1), index(x[j], 2))].push_back(j);
+  for (int i = 0; i < nlocal; i++) {
+    const long long a = index(x[i], 0), b = index(x[i], 1), c = index(x[i], 2);
+    for (long long da = -1; da <= 1; da++)
+      for (long long db = -1; db <= 1; db++)
+        for (long long dc = -1; dc <= 1; dc++) {
+          const auto found = cells.find(key(a + da, b + db, c + dc));
+          if (found == cells.end()) continue;
+          for (int j : found->second) {
+            if (j == i) continue;
+            const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
+            const double reach = radius[i] + radius[j] + skin;
+            if (dx * dx + dy * dy + dz * dz < reach * reach) weight_[i] += 1.0;
+          }
+        }
+  }
 }
 
 double *Balance::split(int dim) const

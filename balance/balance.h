@@ -4,8 +4,8 @@
 
    balance thresh shift dimstr niter stopthresh [weight neighbors]
      thresh: rebalance only if the fullest processor holds more than thresh times the mean count
-       (the mean work with 'weight neighbors': each particle weighs 1 + its neighbour pairs, the
-       pair loop's work, from the lists of the run before)
+       (the mean work with 'weight neighbors': each particle weighs 1 + its neighbours within
+       r_i + r_j + skin, the pair loop's work, counted among the particles and ghosts)
      dimstr: the axes whose cuts move (x, y, z in any order), each once, in that order
      niter: bisection steps per cut (resolution 2^-niter of its span)
      stopthresh: the axes after the one that brings the imbalance to stopthresh or below are left
@@ -40,6 +40,7 @@ class Balance : protected Pointers {
  private:
   double *split(int dim) const;
   void find_weights();
+  void count_neighbours();
   std::vector<double> counts_below(int dim, const std::vector<double> &cuts) const;
   std::vector<double> counts_per_processor() const;
   void shift(int dim, int halvings);

@@ -102,6 +102,18 @@ def errors(run, ref):
             "err_yield_relative": abs(run["yield"] / ref["yield"] - 1.0)}
 
 
+def write_csv(path, rows):
+    """Rows of dicts, the columns in the order they first appear, numbers to 6 digits."""
+    columns = []
+    for row in rows:
+        columns += [k for k in row if k not in columns]
+    with open(path, "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=columns, lineterminator="\n")
+        w.writeheader()
+        for row in rows:
+            w.writerow({k: ("%.6g" % v if isinstance(v, float) else v) for k, v in row.items()})
+
+
 def main(out):
     runs = [avc.load(f) for f in sorted(d for d in (os.path.join(out, n) for n in os.listdir(out))
                                           if os.path.exists(os.path.join(d, "done")))]
@@ -120,14 +132,7 @@ def main(out):
         # the reference's own spread: each seed against the mean of the others
         row.update(errors(r, mean_of([o for o in refs if o is not r]) if r["setting"] == REFERENCE else ref_mean))
         rows.append(row)
-    columns = list(rows[0])
-    for r in rows:
-        columns += [k for k in r if k not in columns]
-    with open(os.path.join(out, "accuracy_seeds_runs.csv"), "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=columns, lineterminator="\n")
-        w.writeheader()
-        for r in rows:
-            w.writerow({k: ("%.6g" % v if isinstance(v, float) else v) for k, v in r.items()})
+    write_csv(os.path.join(out, "accuracy_seeds_runs.csv"), rows)
 
     settings = []
     for r in rows:
@@ -154,7 +159,9 @@ def main(out):
                 _, stats, unpaired, paired = change(base, other)
                 line[m] = stats[1]
                 # paired only at the base's N: at another N the seed draws another sample
-                if paired and line["N"] == next(iter(by[BASE].values()))["N"]:
+                same_n = line["N"] == next(iter(by[BASE].values()))["N"]
+                line["vs_base_paired"] = "yes" if paired and same_n else "no"
+                if paired and same_n:
                     line[m + "_vs_base"], line[m + "_vs_base_se"] = paired[1], paired[2]
                     line[m + "_vs_base_resolved"] = resolved(paired[1], paired[2])
                 else:
@@ -174,15 +181,11 @@ def main(out):
         if ratios:
             line["cost_vs_base_median"] = float(np.median(ratios))
             line["cost_vs_base_min"], line["cost_vs_base_max"] = min(ratios), max(ratios)
+            _, mean, _, se = statistics(ratios)
+            line["cost_vs_base_mean"], line["cost_vs_base_se"] = mean, se
+            line["cost_vs_base_resolved"] = resolved(mean - 1.0, se) if s != BASE else ""
         csv_rows.append(line)
-    columns = []
-    for line in csv_rows:
-        columns += [k for k in line if k not in columns]
-    with open(os.path.join(out, "accuracy_seeds_settings.csv"), "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=columns, lineterminator="\n")
-        w.writeheader()
-        for line in csv_rows:
-            w.writerow({k: ("%.6g" % v if isinstance(v, float) else v) for k, v in line.items()})
+    write_csv(os.path.join(out, "accuracy_seeds_settings.csv"), csv_rows)
     table = markdown(csv_rows, spread)
     open(os.path.join(out, "accuracy_seeds_table.md"), "w").write(table)
     print(table)
@@ -198,12 +201,15 @@ def fmt(line, key, digits):
 
 def markdown(lines, spread):
     out = ["Errors against the reference seeds' mean (mean +- se over the setting's seeds; '*': beyond the "
-           "reference's own spread by 2 se). The reference's row: each of its seeds against the mean of the others.", "",
+           "reference's own spread by 2 se). The reference's row: each of its seeds against the mean of the others. "
+           "Cost: the runtime over N2's in the same round, median and range of the rounds ('*': the rounds' mean "
+           "differs from 1 by more than 2 se).", "",
            "| setting | seeds | cost vs N2 (median, range) | dn | dK0 | dGSD (%) | dI_G | d events (%) | d yield (%) |",
            "|---|---|---|---|---|---|---|---|---|"]
     for line in lines:
         cells = [line["setting"], "%d" % line["seeds"]]
-        cells.append("%.2f (%.2f - %.2f)" % (line["cost_vs_base_median"], line["cost_vs_base_min"], line["cost_vs_base_max"])
+        cells.append("%.2f (%.2f - %.2f)%s" % (line["cost_vs_base_median"], line["cost_vs_base_min"], line["cost_vs_base_max"],
+                                               "*" if line.get("cost_vs_base_resolved") == "yes" else "")
                      if "cost_vs_base_median" in line else "")
         for e, digits, scale in (("err_porosity", 4, 1), ("err_K0", 3, 1), ("err_gsd_percent", 2, 1), ("err_I_G", 4, 1),
                                  ("err_events_relative", 1, 100), ("err_yield_relative", 1, 100)):
@@ -211,13 +217,14 @@ def markdown(lines, spread):
             mark = "*" if line.get(e + "_beyond_spread") == "yes" else ""
             cells.append(("%.*f" % (digits, mean)) + ("" if not math.isfinite(se) else " +- %.*f" % (digits, se)) + mark)
         out.append("| " + " | ".join(cells) + " |")
-    out += ["", "Changes against the base N2, paired by seed (mean +- se; '*': resolved at 2 se):", "",
+    out += ["", "Changes against the base N2, paired by seed at N = 2 (unpaired at another N, whose seed draws "
+            "another sample); mean +- se, '*': resolved at 2 se:", "",
             "| setting | n at 10 MPa | n at 100 MPa | K0 | I_G at 100 MPa | events per grain | yield (MPa) |",
             "|---|---|---|---|---|---|---|"]
     for line in lines:
         if "n_10MPa_vs_base" not in line:
             continue
-        cells = [line["setting"]]
+        cells = [line["setting"] + ("" if line["vs_base_paired"] == "yes" else " (unpaired)")]
         for m, digits in (("n_10MPa", 4), ("n_100MPa", 4), ("K0_mean", 3), ("I_G_100MPa", 4), ("events_per_grain", 4),
                           ("yield_MPa", 2)):
             cells.append("%+.*f +- %.*f%s" % (digits, line[m + "_vs_base"], digits, line[m + "_vs_base_se"],

@@ -8,7 +8,10 @@
 set(_post_modules numpy scipy matplotlib)
 if(NOT LIGGGHTS_CRUSH_PYTHON)
   find_program(_python_on_path NAMES python3 NO_CACHE)
-  set(_candidates ${_python_on_path} /usr/bin/python3)
+  set(_candidates /usr/bin/python3)
+  if(_python_on_path)
+    list(PREPEND _candidates "${_python_on_path}")
+  endif()
   foreach(_python IN LISTS _candidates)
     if(EXISTS "${_python}")
       execute_process(COMMAND "${_python}" -c "import numpy, scipy, matplotlib; import sys; print(sys.executable)"
@@ -38,7 +41,13 @@ if(NOT _tool_lines)
   message(FATAL_ERROR "post/__init__.py lists no tool in TOOLS")
 endif()
 
-file(RELATIVE_PATH _share_from_bin "/prefix/${CMAKE_INSTALL_BINDIR}" "/prefix/${_share}")
+# the launchers find share/ relative to themselves (a relocatable install, the Debian package);
+# an absolute BINDIR or DATADIR gets the absolute path
+if(IS_ABSOLUTE "${CMAKE_INSTALL_BINDIR}" OR IS_ABSOLUTE "${CMAKE_INSTALL_DATADIR}")
+  set(_share_from_bin "${CMAKE_INSTALL_FULL_DATADIR}/liggghts-crush")
+else()
+  file(RELATIVE_PATH _share_from_bin "/prefix/${CMAKE_INSTALL_BINDIR}" "/prefix/${_share}")
+endif()
 set(_launchers "")
 foreach(_line IN LISTS _tool_lines)
   string(REGEX MATCH "\"(crush-[a-z-]+)\": \"([a-z_]+)\"" _ "${_line}")

@@ -67,9 +67,11 @@ def requires(tool, *modules):
                 ", ".join(missing))]
     python = _interpreter_with(modules)
     command = command_of(tool)
+    bound = open(INTERPRETER_FILE).read().strip() if os.path.exists(INTERPRETER_FILE) else None
     if python:
         lines.append("Run it with the Python that has them: %s %s ..." % (python, os.path.join(HERE, tool + ".py")))
-        if command:
+        # the installed command runs under the Python it is bound to: named where that one has them
+        if command and (bound is None or os.path.realpath(bound) == os.path.realpath(python)):
             lines.append("or with the command setup.sh installs beside liggghts-crush: %s ..." % command)
     else:
         lines.append("No Python here has them: install them into this one (python3 -m pip install %s), "

@@ -30,10 +30,10 @@ for spec in $tests; do
     Tloose) deck=in.triaxial; vars=(-var sample loose -var mu_prep 0.5) ;;
     *) echo "unknown test $t (O2 O1.5 O1 I2 I1.5 I1 Tdense Tloose)" >&2; exit 2 ;;
   esac
-  vars+=("${seed_vars[@]}")
+  vars+=(${seed_vars[@]+"${seed_vars[@]}"})
   # EXTRA_VARS: further -var pairs for every test (for example '-var neighbor_style multi')
   read -r -a extra <<< "${EXTRA_VARS:-}"
-  vars+=("${extra[@]}")
+  vars+=(${extra[@]+"${extra[@]}"})
   rm -rf "$dir" && mkdir -p "$dir" && cp "$here"/examples/fontainebleau/in.* "$dir"/
   echo "== $spec: mpirun -np $ranks liggghts -in $deck ${vars[*]}"
   start=$(date +%s%N)

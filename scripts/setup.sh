@@ -44,7 +44,8 @@ tarball_sha256=$(sed -n 's/^set(LIGGGHTS_TARBALL_SHA256 "\([0-9a-f]*\)".*/\1/p' 
 
 as_root() { if [ "$(id -u)" -eq 0 ]; then "$@"; elif command -v sudo >/dev/null; then sudo "$@"; else return 1; fi; }
 can_root() { [ "$(id -u)" -eq 0 ] || { command -v sudo >/dev/null && sudo -n true 2>/dev/null; }; }
-have_apt() { [ -z "${LIGGGHTS_CRUSH_NO_APT:-}" ] && command -v dpkg-query >/dev/null && command -v apt-get >/dev/null; }
+no_apt() { [ -n "${LIGGGHTS_CRUSH_NO_APT:-}" ] && [ "${LIGGGHTS_CRUSH_NO_APT}" != 0 ]; }
+have_apt() { ! no_apt && command -v dpkg-query >/dev/null && command -v apt-get >/dev/null; }
 
 # --- path 1: Debian packages ------------------------------------------------------------------------
 packages=(g++ make cmake ccache patch libopenmpi-dev openmpi-bin libeigen3-dev libgtest-dev
@@ -78,7 +79,7 @@ fi
 
 # --- path 2: what the build needs, found on the PATH -------------------------------------------------
 cmake_args=(-DCMAKE_BUILD_TYPE=Release)
-if [ $debian -eq 0 ]; then
+if [ $debian -eq 0 ] && [ $do_build -eq 1 ]; then
   lacking=()
   mpicxx=$(command -v "${MPICXX:-mpicxx}" || true)
   [ -n "$mpicxx" ] || lacking+=("an MPI C++ compiler wrapper (${MPICXX:-mpicxx}; e.g. 'module load openmpi', or set MPICXX)")
@@ -106,15 +107,19 @@ fi
 # --- LIGGGHTS source: a given tarball, one fetched before, or Debian's source package -------------
 mkdir -p "$download_dir"
 if [ -n "$tarball" ]; then
-  [ -f "$tarball" ] || { say "--tarball $tarball: no such file"; exit 1; }
+  [ -f "$tarball" ] || { say "LIGGGHTS tarball $tarball (--tarball or LIGGGHTS_TARBALL): no such file"; exit 1; }
   tarball=$(cd "$(dirname "$tarball")" && pwd)/$(basename "$tarball")
-  say "LIGGGHTS source: $tarball (CMake checks its SHA256)"
 else
   tarball=$(ls "$download_dir"/liggghts_3.8.0*.orig.tar.* 2>/dev/null | head -n 1 || true)
+  # a build configured before keeps the tarball it was given (a second run needs no --tarball)
+  if [ -z "$tarball" ] && [ -f "$build_dir/CMakeCache.txt" ]; then
+    tarball=$(sed -n 's/^LIGGGHTS_TARBALL:FILEPATH=//p' "$build_dir/CMakeCache.txt")
+    [ -f "$tarball" ] || tarball=""
+  fi
 fi
 if [ -n "$tarball" ]; then
-  say "LIGGGHTS source present: $tarball"
-elif command -v apt-get >/dev/null && [ -z "${LIGGGHTS_CRUSH_NO_APT:-}" ] && \
+  say "LIGGGHTS source: $tarball (CMake checks its SHA256)"
+elif command -v apt-get >/dev/null && ! no_apt && \
      { apt-get source --print-uris liggghts >/dev/null 2>&1 || can_root; }; then
   if ! apt-get source --print-uris liggghts >/dev/null 2>&1; then
     # No deb-src entries: derive them from the machine's own 'deb' entries (no mirror is hard-coded).
@@ -144,10 +149,13 @@ fi
 
 [ $do_build -eq 1 ] || exit 0
 
-if [ ! -f "$build_dir/CMakeCache.txt" ]; then
+# Configured when the build has no Makefile (a failed configuration leaves a cache, not a Makefile),
+# and again when further options are given; the compilers of a configured build stay its own.
+read -r -a extra <<< "${LIGGGHTS_CRUSH_CMAKE_ARGS:-}"
+if [ ! -f "$build_dir/Makefile" ] || [ ${#extra[@]} -gt 0 ]; then
   say "configuring in $build_dir"
-  read -r -a extra <<< "${LIGGGHTS_CRUSH_CMAKE_ARGS:-}"
-  cmake -S "$here" -B "$build_dir" "${cmake_args[@]}" -DLIGGGHTS_TARBALL="$tarball" "${extra[@]}" || {
+  [ ! -f "$build_dir/CMakeCache.txt" ] || cmake_args=(-DCMAKE_BUILD_TYPE=Release)
+  cmake -S "$here" -B "$build_dir" "${cmake_args[@]}" -DLIGGGHTS_TARBALL="$tarball" ${extra[@]+"${extra[@]}"} || {
     say "configuring failed: see the CMake error above. Eigen 3 is found through CMake: 'module load eigen'"
     say "or -DEigen3_DIR=<eigen>/share/eigen3/cmake in LIGGGHTS_CRUSH_CMAKE_ARGS"
     exit 1

@@ -23,7 +23,7 @@ import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from liggghts_run import check, variants  # noqa: E402
+from liggghts_run import check, skip, variants  # noqa: E402
 from liggghts_run import main as test_main  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))))
@@ -161,6 +161,16 @@ def as_user(cmd):
     return ["setpriv", "--reuid=nobody", "--regid=nogroup", "--clear-groups"] + cmd
 
 
+def skip_unless_readable(paths):
+    """Skips (CTest's 77) where the unprivileged user cannot read the repository's files (a checkout
+    in a private folder): the test is about setup.sh, not the checkout's permissions."""
+    if os.getuid() != 0:
+        return
+    for path in paths:
+        if subprocess.run(as_user(["test", "-r", path]), stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL).returncode:
+            skip("user nobody cannot read %s (a private checkout): the unprivileged build is not tried" % path)
+
+
 def cluster_env(home, path):
     return {"HOME": home, "PATH": path, "LANG": "C.UTF-8", "TMPDIR": "/tmp"}
 
@@ -177,6 +187,7 @@ def case_cluster_messages(build, work):
     """setup.sh on a machine without dpkg, apt and sudo, as an unprivileged user, stops before building
     with what it lacks: without an MPI compiler wrapper, the wrapper (and where the cluster's lines
     are); without a LIGGGHTS tarball, the file to give, its SHA256 and the option."""
+    skip_unless_readable([SETUP, os.path.join(REPO, "cmake", "LiggghtsSource.cmake"), tarball_of(build)])
     root = os.path.join(work, "messages")
     shutil.rmtree(root, ignore_errors=True)
     os.makedirs(os.path.join(root, "home"))
@@ -202,6 +213,7 @@ def case_cluster_build(build, work):
     fresh folder, from the tarball given with --tarball, GoogleTest and VTK switched off: the compiler
     is mpicxx, no unit test and no VTK dump is built, and the binary runs O-2 to 1 MPa on 2 ranks
     (the same state at 1 MPa, on 1 rank, as the main build's binary)."""
+    skip_unless_readable([SETUP, os.path.join(REPO, "CMakeLists.txt"), tarball_of(build)])
     root = os.path.join(work, "cluster")
     shutil.rmtree(root, ignore_errors=True)
     os.makedirs(os.path.join(root, "home"))
