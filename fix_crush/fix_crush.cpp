@@ -601,7 +601,7 @@ void FixCrush::advise_neighbor_multi()
   snprintf(msg, sizeof(msg), "Fix crush (id %s): the radii will spread from %g m to %g m (%.0f:1%s) as grains "
            "break, and 'neighbor ... bin' searches about every sphere as far as the largest reaches: 'neighbor "
            "SKIN multi' finds the same pairs by size class (doc/neighbor_multi.txt; LIGGGHTS' conveyor "
-           "tutorial with crushing took 0.43 of bin's time)\n", id, r_max_all, r_min, r_max_all / r_min,
+           "tutorial with crushing took 0.49 of bin's time)\n", id, r_max_all, r_min, r_max_all / r_min,
            settings_.dmin > 0.0 ? "" : " or more: no comminution limit");
   if (screen) fputs(msg, screen);
   if (logfile) fputs(msg, logfile);
