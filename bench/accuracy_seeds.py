@@ -192,13 +192,6 @@ def main(out):
     figure(csv_rows, spread, out)
 
 
-def fmt(line, key, digits):
-    v, se = line.get(key), line.get(key + "_se")
-    if v is None or not math.isfinite(v):
-        return ""
-    return ("%.*f" % (digits, v)) + ("" if se is None or not math.isfinite(se) else " +- %.*f" % (digits, se))
-
-
 def markdown(lines, spread):
     out = ["Errors against the reference seeds' mean (mean +- se over the setting's seeds; '*': beyond the "
            "reference's own spread by 2 se). The reference's row: each of its seeds against the mean of the others. "

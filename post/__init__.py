@@ -13,7 +13,7 @@ import os
 import subprocess
 import sys
 
-# command -> module of post/ (cmake/Install.cmake installs one command each)
+# command -> module of post/ (cmake/PostTools.cmake installs one command each)
 TOOLS = {
     "crush-calibrate": "calibrate",
     "crush-chamber-profiles": "chamber_profiles",
@@ -31,7 +31,7 @@ TOOLS = {
 }
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-# Written by the install (cmake/Install.cmake): the Python the installed commands are bound to.
+# Written by the install (cmake/PostTools.cmake): the Python the installed commands are bound to.
 INTERPRETER_FILE = os.path.join(HERE, "interpreter")
 
 
@@ -40,12 +40,15 @@ def command_of(module):
     return next((c for c, m in TOOLS.items() if m == module), None)
 
 
-def _interpreter_with(modules):
-    """A Python that imports all of modules: the one the install bound the commands to, else
+def _bound_interpreter():
+    """The Python the installed commands are bound to (None in a source tree, which has no install)."""
+    return open(INTERPRETER_FILE).read().strip() if os.path.exists(INTERPRETER_FILE) else None
+
+
+def _interpreter_with(modules, bound):
+    """A Python that imports all of modules: bound (the one the install bound the commands to), else
     /usr/bin/python3 (Debian's python3-numpy, -scipy, -matplotlib); None when neither does."""
-    candidates = []
-    if os.path.exists(INTERPRETER_FILE):
-        candidates.append(open(INTERPRETER_FILE).read().strip())
+    candidates = [bound] if bound else []
     candidates.append("/usr/bin/python3")
     probe = "import " + ", ".join(modules)
     for python in candidates:
@@ -65,9 +68,9 @@ def requires(tool, *modules):
     lines = ["%s: this Python (%s, %d.%d) has no module named '%s'; the tool needs %s (missing here: %s)."
              % (tool, sys.executable, sys.version_info[0], sys.version_info[1], missing[0], ", ".join(modules),
                 ", ".join(missing))]
-    python = _interpreter_with(modules)
+    bound = _bound_interpreter()
+    python = _interpreter_with(modules, bound)
     command = command_of(tool)
-    bound = open(INTERPRETER_FILE).read().strip() if os.path.exists(INTERPRETER_FILE) else None
     if python:
         lines.append("Run it with the Python that has them: %s %s ..." % (python, os.path.join(HERE, tool + ".py")))
         # the installed command runs under the Python it is bound to: named where that one has them
