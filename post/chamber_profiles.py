@@ -9,7 +9,8 @@ axis, coarser beyond R1, coarser still beyond R2).
                              [--interfaces R1,R2] [--points 20000] [--seed 1] [--out profiles] [--plot]
 
 The chamber (examples/penetration) is a quarter cylinder about the z axis (the cone's): the sand
-fills 0 < x < wall_x, 0 < y < wall_y. DUMP is a LIGGGHTS 'dump custom' file (its last snapshot, or
+fills 0 < x < wall_x, 0 < y < wall_y; or the whole chamber (in.geometry's sector 360, told by sand
+on both sides of the axis), -wall < x < wall_x and the same in y, whose annuli are whole. DUMP is a LIGGGHTS 'dump custom' file (its last snapshot, or
 the one of timestep --snapshot) with the columns x y z radius and, optionally,
   c_stress[1] c_stress[2] c_stress[3] (compute stress/atom: s_xx s_yy s_zz, pressure x volume,
       negative in compression) and c_stress[4] (s_xy) for the radial and hoop stresses;
@@ -22,7 +23,8 @@ less --margin D_c at each end (the bottom wall and the top). In each annulus:
       (seeded), with its binomial standard error;
   p = -(1/3V) sum_i (s_xx + s_yy + s_zz), sigma_zz and, with s_xy, sigma_rr and sigma_tt (each
       particle's tensor turned to its own angle, as post/ring_stress.py), summed over the particles
-      whose centres lie in the annulus, V its volume (pi/4 (r_k+1^2 - r_k^2) (zmax - zmin));
+      whose centres lie in the annulus, V its volume (pi/4 (r_k+1^2 - r_k^2) (zmax - zmin) in the
+      quarter, four times that in the whole chamber);
       compression positive (Pa);
   the mean coordination number of those particles, and that of those with 2 contacts or more (the
       rattlers left out), with their standard errors;
@@ -108,12 +110,21 @@ def particles_of(columns, rows, where, stress="c_stress", coord="c_coord", scale
     return p
 
 
+def sector_of(p):
+    """The chamber's angle about the axis: 360 where sand lies on both sides of it in x and in y (the
+    whole chamber), else 90 (the quarter, whose symmetry walls keep every centre at x, y > 0)."""
+    return 360.0 if np.min(p["x"]) < 0 and np.min(p["y"]) < 0 else 90.0
+
+
 def window(p, Dc, dr, rmax, wall_x, wall_y, zmin, zmax, margin):
     """(edges, zmin, zmax): the annuli's edges (m) and the height window; walls and heights not given
-    are the particles' extents (centre + radius), the window less margin D_c at each end."""
+    are the particles' extents (centre + radius), the window less margin D_c at each end; in the
+    whole chamber the lo walls' distances from the axis bound the annuli too."""
     wall_x = np.max(p["x"] + p["radius"]) if wall_x is None else wall_x
     wall_y = np.max(p["y"] + p["radius"]) if wall_y is None else wall_y
     extent = min(wall_x, wall_y)
+    if sector_of(p) == 360.0:
+        extent = min(extent, -np.min(p["x"] - p["radius"]), -np.min(p["y"] - p["radius"]))
     if rmax is None:
         rmax = extent
     elif rmax > extent * (1 + 1e-12):
@@ -131,10 +142,10 @@ def window(p, Dc, dr, rmax, wall_x, wall_y, zmin, zmax, margin):
     return np.arange(n + 1) * dr * Dc, zmin, zmax
 
 
-def quarter_annulus_points(rng, r1, r2, zmin, zmax, n):
-    """n points uniform in the volume of the quarter annulus r1 <= r < r2, 0 <= theta < 90 degrees."""
+def annulus_points(rng, r1, r2, zmin, zmax, n, sector):
+    """n points uniform in the volume of the annulus r1 <= r < r2, 0 <= theta < sector degrees."""
     r = np.sqrt(r1 * r1 + rng.random(n) * (r2 * r2 - r1 * r1))
-    t = rng.random(n) * (math.pi / 2)
+    t = rng.random(n) * math.radians(sector)
     return np.column_stack([r * np.cos(t), r * np.sin(t), zmin + rng.random(n) * (zmax - zmin)])
 
 
@@ -177,12 +188,13 @@ def profiles(p, edges, zmin, zmax, points, seed):
     big = float(np.max(radius))
     rng = np.random.default_rng(seed)
     in_z = (p["z"] >= zmin) & (p["z"] < zmax)
+    sector = sector_of(p)
     rows = []
     for r1, r2 in zip(edges[:-1], edges[1:]):
         row = {"r_lo": float(r1), "r_hi": float(r2)}
         # the largest sphere that can reach the annulus: fine zones need not search as far as coarse ones
         near = (r >= r1 - big) & (r < r2 + big) & (p["z"] >= zmin - big) & (p["z"] < zmax + big)
-        pts = quarter_annulus_points(rng, r1, r2, zmin, zmax, points)
+        pts = annulus_points(rng, r1, r2, zmin, zmax, points, sector)
         frac = float(np.mean(solid(pts, tree, centres, radius, float(np.max(radius[near]))))) if near.any() else 0.0
         row.update(solid_fraction=frac, porosity=1 - frac, porosity_se=math.sqrt(frac * (1 - frac) / points))
         sel = in_z & (r >= r1) & (r < r2)
@@ -190,7 +202,7 @@ def profiles(p, edges, zmin, zmax, points, seed):
         row["mean_d"] = float(np.mean(2 * radius[sel])) if sel.any() else None
         row["mean_N"] = float(np.mean(p["scale"][sel])) if "scale" in p and sel.any() else None
         if "stress" in p:
-            volume = math.pi / 4 * (r2 * r2 - r1 * r1) * (zmax - zmin)
+            volume = math.radians(sector) / 2 * (r2 * r2 - r1 * r1) * (zmax - zmin)
             s = p["stress"][sel]
             # stress/atom is minus the virial (negative in compression): compression positive here
             row["p"] = -float(np.sum(s[:, :3])) / (3 * volume)

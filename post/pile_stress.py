@@ -12,7 +12,8 @@ tip h / R, from the rings next to the shaft; and maps of the three stresses.
 label): their snapshots are averaged together, each in its own tip's frame. Reads, for each,
 stress_LABEL_N<N>.liggghts (x y z and compute stress/atom, post/ring_stress.py's convention)
 and penetration_LABEL_N<N>.csv (the tip's height at each step, interpolated). --dr and --dh are in
-D_c. Writes, in the first folder, OUT_rings.csv (r/R, h/R, particles, sigma_rr, sigma_tt, sigma_zz, sigma_rz in Pa, the
+D_c. The rings are quarter rings in the quarter chamber and whole ones in the whole chamber (sand on
+both sides of the axis). Writes, in the first folder, OUT_rings.csv (r/R, h/R, particles, sigma_rr, sigma_tt, sigma_zz, sigma_rz in Pa, the
 snapshots' mean, over those with particles in the ring), OUT_shaft.csv (h/R and sigma_r' in the first ring outside the shaft), OUT_maps.png
 and OUT_shaft.png, and prints the shaft's profile.
 """
@@ -49,7 +50,9 @@ def averaged_rings(snapshots, Dc, start, dr, dh):
             continue
         used += 1
         particles = [(x, y, z - tip, s) for x, y, z, s in stress_particles(columns, rows)]
-        for key, values in ring_stresses(particles, dr, dh, sector=90.0).items():
+        # the quarter chamber, or the whole one (in.geometry's sector 360: sand on both sides of the axis)
+        whole = min(q[0] for q in particles) < 0 and min(q[1] for q in particles) < 0
+        for key, values in ring_stresses(particles, dr, dh, sector=360.0 if whole else 90.0).items():
             entry = total.setdefault(key, [0.0] * 5)
             seen[key] = seen.get(key, 0) + 1
             for m, value in enumerate(values):

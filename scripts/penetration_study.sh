@@ -126,7 +126,11 @@ done
 # (D_c / d50 = 5 and 10 at the cone, 10 D_c wide; 2.1 is the rate study's 0.25 m/s; at 10 the fine
 # zone is 1.5 D_c wide, coarsen 3), width (D_c / d50 =
 # 5, 20 and 30 D_c wide), fine (D_c / d50 = 5, fine zone of 1 D_c against 2), halving (D_c / d50 = 5 at
-# half the velocity), below (D_c / d50 = 5, 5 D_c of sand below the final tip against 2.5).
+# half the velocity), below (D_c / d50 = 5, 5 D_c of sand below the final tip against 2.5), whole (the
+# whole chamber, in.geometry's sector 360, against the quarter: the rate study's uniform chamber at
+# D_c / d50 = 2.1 and 0.25 m/s, where the symmetry planes cut the fewest grains across the cone, with
+# the quarter's rate_v0.25_s1 run again beside it), whole_refined (the same at D_c / d50 = 5, the
+# default refined chamber).
 v_at_I() { awk -v n="$1" -v f="${2:-1}" 'BEGIN {printf "%.4g", f * 0.25 * 0.0357 / (0.21e-3 * n) / 2.125}'; }
 for k in 1 2 3; do
   seed=${seeds[k-1]}
@@ -146,6 +150,10 @@ for k in 1 2 3; do
   group[halving]+=" refined_N34_w10_s$k refined_N34_half_s$k"
   spec[refined_N34_below5_s$k]=dense:34:region:$(v_at_I 34):10:2:$refined::refine=1,below=5
   group[below]+=" refined_N34_w10_s$k refined_N34_below5_s$k"
+  spec[whole_N80_s$k]=dense:80:region:0.25:10:2:$refined::sector=360
+  group[whole]+=" whole_N80_s$k"
+  spec[refined_N34_whole_s$k]=dense:34:region:$(v_at_I 34):10:2:$refined::refine=1,sector=360
+  group[whole_refined]+=" refined_N34_w10_s$k refined_N34_whole_s$k"
 done
 # What a geotechnical engineer would check, at D_c / d50 = 5 and 10 D_c wide (the refined chamber the
 # resolution and width studies afford): groups stress (dense, the INPG e0 = 0.62, and loose chambers
@@ -182,6 +190,7 @@ for k in 1 2 3; do
   spec[refined_N34_pile_s$k]=dense:34:region:$v:10:2:normal_clipped_originals:1e5:$seed:scaled:4:tip_shape=flat,stress_every=0.5:refine=1
   group[pile_refined]+=" refined_N34_pile_s$k"
 done
+group[whole]="rate_v0.25_s1${group[whole]}"
 cases=""
 for c in ${*:-$order}; do cases+=" ${group[$c]:-$c}"; done
 # The last four columns, with the spec's, tell every case apart (post/penetration_stats.py groups by

@@ -259,6 +259,29 @@ def case_seeds(liggghts, work):
           % (jump["jump"], jump["jump_se"]))
 
 
+def case_whole(liggghts, work):
+    """The whole chamber (in.geometry's sector 360): the two zones' packing mirrored into the four
+    quadrants about the axis, every particle holding -p0 V_i delta. The script tells the whole
+    chamber by the sand on both sides of the axis; its annuli are whole, so each annulus's solid
+    fraction is the lattice's and p = sigma_rr = sigma_tt = p0 f_c, as in the quarter (a quarter
+    annulus's volume would read four times the stress), with four times the quarter's particles."""
+    a, p0 = DC / 10, 2e5
+    quarter = two_zones(40, 24, a, 2.25 * DC)
+    columns = ["x", "y", "z", "radius"] + ["c_stress[%d]" % m for m in range(1, 5)]
+    stress = lambda r: [-p0 * 4 / 3 * math.pi * r ** 3] * 3 + [0]  # noqa: E731
+    whole = [(sx * x, sy * y, z, r) + tuple(stress(r)) for x, y, z, r, _ in quarter for sx in (1, -1) for sy in (1, -1)]
+    zmin, zmax = 6 * a, 18 * a
+    options = ["--dr", "0.5", "--zmin", str(zmin), "--zmax", str(zmax)]
+    rows, _, _ = run_profiles(work, "quarter", [(100, columns, [(x, y, z, r) + tuple(stress(r)) for x, y, z, r, _ in quarter])], options)
+    whole_rows, _, _ = run_profiles(work, "whole", [(100, columns, whole)], options)
+    check(len(whole_rows) == len(rows) == 8, "8 annuli of 0.5 D_c to 4 D_c in both chambers")
+    check_fraction(whole_rows, "the whole chamber")
+    worst = max(abs(w[k] / q[k] - 1) for w, q in zip(whole_rows, rows) for k in ("p", "sigma_rr", "sigma_tt", "sigma_zz"))
+    check(worst < 1e-9 and all(w["particles"] == 4 * q["particles"] for w, q in zip(whole_rows, rows)),
+          "p, sigma_rr, sigma_tt and sigma_zz of each whole annulus are the quarter's to %.1e (p %.4g - %.4g kPa), "
+          "with 4 times its particles" % (worst, min(w["p"] for w in whole_rows) / 1e3, max(w["p"] for w in whole_rows) / 1e3))
+
+
 def case_missing_column(liggghts, work):
     """A dump without the radius column stops with a message that names it; so does a --snapshot
     that the dump does not hold, naming the ones it does."""

@@ -536,6 +536,53 @@ def case_cone_resume(liggghts, work, ranks):
               % (name % "killed", resumed.count("\n")))
 
 
+@variants(*each_rank_count(2))
+def case_whole_chamber(liggghts, work, ranks):
+    """The whole chamber (in.geometry's sector 360) on 2 ranks, the ranks' cut through the axis, 4 D_c
+    wide, and the quarter chamber of that width: the whole one's sand fills both sides of the axis from the lo walls at -half, about a quarter of the grains in
+    each quadrant; a push with crushing in the zone keeps the books and every tag unique, with every
+    event inside the zone; q_c is the whole cone's force over the whole cone's area, and it lies near
+    the quarter chamber's q_c on the same grains' draw (the quarter's factor 4 on the whole cone would
+    read four times it)."""
+    ranks = int(ranks)
+    q_c = {}
+    for sector in (90, 360):
+        folder = prepare_chamber(liggghts, os.path.join(work, str(sector)), ranks, sector=sector, width=4)
+        push(liggghts, folder, ranks, crushing="region", vtk=0, depth=2, sector=sector, width=4)
+        history, n0, events = check_test_books(folder, "dense_region")
+        q_c[sector] = sum(r["q_c"] for r in history if r["depth_Dc"] > 1.0) / sum(1 for r in history if r["depth_Dc"] > 1.0)
+        if sector == 90:
+            continue
+        _, _, atoms = read_dump(os.path.join(folder, "chamber_dense_N80.liggghts"))[0]
+        half = 0.5 * 4 * DC
+        quadrants = [sum(1 for a in atoms if (a["x"] > 0) == sx and (a["y"] > 0) == sy) / len(atoms)
+                     for sx in (True, False) for sy in (True, False)]
+        lowest = min(min(a["x"] - a["radius"], a["y"] - a["radius"]) for a in atoms)
+        overlap = 0.05 * max(a["radius"] for a in atoms)  # the grains press into the walls a little
+        check(all(0.2 < q < 0.3 for q in quadrants) and -half - overlap <= lowest < -half + 0.1 * half,
+              "%d grains, %s of them in each quadrant; the sand reaches the lo walls at -%.4f m (%.4f m)"
+              % (len(atoms), ["%.3f" % q for q in quadrants], half, lowest))
+        area = math.pi * DC ** 2 / 4
+        worst = max(abs(r["q_c"] - r["F_cone"] / area) for r in history) / max(r["q_c"] for r in history)
+        check(worst < 1e-6, "q_c = F_cone / (pi D_c^2 / 4) at every row, the whole cone's force (to %.1e)" % worst)
+        tolerance = 0.02 * DC
+        inside = [math.hypot(e["x"], e["y"]) <= 1.5 * DC + tolerance
+                  and -1.5 * DC - tolerance <= e["z"] - tip_at(history, e["step"]) <= 1.0 * DC + tolerance for e in events]
+        check(events and all(inside), "the whole chamber's %d events inside the zone around the tip" % len(events))
+    ratio = q_c[360] / q_c[90]
+    check(0.4 < ratio < 2.5, "q_c over 1 - 2 D_c: %.3g MPa in the whole chamber, %.3g in the quarter (ratio %.2f, "
+          "within 0.4 - 2.5)" % (q_c[360] / 1e6, q_c[90] / 1e6, ratio))
+
+
+def case_sector_refused(liggghts, work):
+    """A sector other than 90 or 360 stops in.chamber before anything is built, with a line that names
+    the variable and the two values it takes."""
+    out = run_deck(liggghts, os.path.join(EXAMPLES, "penetration", "in.chamber"), os.path.join(work, "penetration"),
+                   dict(CHAMBER, sector=180), expect_fail=True)
+    check("sector 180: expected 90 (a quarter chamber) or 360 (the whole chamber)" in out and "ERROR" in out
+          and "Created" not in out, "sector 180 refused before the box is made: %s" % out.strip().splitlines()[-1])
+
+
 def study_header():
     """The columns of scripts/penetration_study.sh's study.csv (its header line)."""
     script = open(STUDY).read()
