@@ -51,6 +51,7 @@ import sys
 if not __package__:  # run as a file (python3 post/chamber_profiles.py): the folder above post/ holds the package
     sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 from post import requires  # noqa: E402
+from post.ring_stress import chamber_sector  # noqa: E402
 
 requires("chamber_profiles", "numpy", "scipy")
 
@@ -110,12 +111,6 @@ def particles_of(columns, rows, where, stress="c_stress", coord="c_coord", scale
     return p
 
 
-def sector_of(p):
-    """The chamber's angle about the axis: 360 where sand lies on both sides of it in x and in y (the
-    whole chamber), else 90 (the quarter, whose symmetry walls keep every centre at x, y > 0)."""
-    return 360.0 if np.min(p["x"]) < 0 and np.min(p["y"]) < 0 else 90.0
-
-
 def window(p, Dc, dr, rmax, wall_x, wall_y, zmin, zmax, margin):
     """(edges, zmin, zmax): the annuli's edges (m) and the height window; walls and heights not given
     are the particles' extents (centre + radius), the window less margin D_c at each end; in the
@@ -123,7 +118,7 @@ def window(p, Dc, dr, rmax, wall_x, wall_y, zmin, zmax, margin):
     wall_x = np.max(p["x"] + p["radius"]) if wall_x is None else wall_x
     wall_y = np.max(p["y"] + p["radius"]) if wall_y is None else wall_y
     extent = min(wall_x, wall_y)
-    if sector_of(p) == 360.0:
+    if chamber_sector(p["x"], p["y"]) == 360.0:
         extent = min(extent, -np.min(p["x"] - p["radius"]), -np.min(p["y"] - p["radius"]))
     if rmax is None:
         rmax = extent
@@ -188,7 +183,7 @@ def profiles(p, edges, zmin, zmax, points, seed):
     big = float(np.max(radius))
     rng = np.random.default_rng(seed)
     in_z = (p["z"] >= zmin) & (p["z"] < zmax)
-    sector = sector_of(p)
+    sector = chamber_sector(p["x"], p["y"])
     rows = []
     for r1, r2 in zip(edges[:-1], edges[1:]):
         row = {"r_lo": float(r1), "r_hi": float(r2)}

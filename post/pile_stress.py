@@ -35,7 +35,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 from post.penetration import tip_at  # noqa: E402
-from post.ring_stress import read_snapshots, ring_stresses, stress_particles  # noqa: E402
+from post.ring_stress import chamber_sector, read_snapshots, ring_stresses, stress_particles  # noqa: E402
 
 
 def averaged_rings(snapshots, Dc, start, dr, dh):
@@ -50,9 +50,8 @@ def averaged_rings(snapshots, Dc, start, dr, dh):
             continue
         used += 1
         particles = [(x, y, z - tip, s) for x, y, z, s in stress_particles(columns, rows)]
-        # the quarter chamber, or the whole one (in.geometry's sector 360: sand on both sides of the axis)
-        whole = min(q[0] for q in particles) < 0 and min(q[1] for q in particles) < 0
-        for key, values in ring_stresses(particles, dr, dh, sector=360.0 if whole else 90.0).items():
+        sector = chamber_sector([q[0] for q in particles], [q[1] for q in particles])
+        for key, values in ring_stresses(particles, dr, dh, sector=sector).items():
             entry = total.setdefault(key, [0.0] * 5)
             seen[key] = seen.get(key, 0) + 1
             for m, value in enumerate(values):

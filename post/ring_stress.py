@@ -53,6 +53,13 @@ def stress_particles(columns, rows, column="c_stress", where="dump"):
     return [(r[at[0]], r[at[1]], r[at[2]], tuple(r[a] for a in at[3:])) for r in rows]
 
 
+def chamber_sector(xs, ys):
+    """The penetration chamber's angle about the axis (degrees), told from its particles' centres:
+    360 where they lie on both sides of the axis in x and in y (in.geometry's sector 360, the whole
+    chamber), else 90 (the quarter, whose symmetry walls keep every centre at x, y > 0)."""
+    return 360.0 if min(xs) < 0 and min(ys) < 0 else 90.0
+
+
 def cylindrical(s, theta):
     """(rr, tt, zz, rz) of a symmetric tensor given as (xx, yy, zz, xy, xz, yz) at angle theta."""
     c, n = math.cos(theta), math.sin(theta)

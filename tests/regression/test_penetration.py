@@ -356,6 +356,13 @@ def grains0(folder):
     return int(float(text.split("variable grains0 equal")[1].split()[0]))
 
 
+def all_in_zone(events, history):
+    """Whether every event lies inside in.cone's zone of crushing region at its step: within 1.5 D_c
+    of the axis, from 1.5 D_c below the tip to 1 D_c above it (the tip from the history), to 0.02 D_c."""
+    tolerance = 0.02 * DC
+    return all(math.hypot(e["x"], e["y"]) <= 1.5 * DC + tolerance
+               and -1.5 * DC - tolerance <= e["z"] - tip_at(history, e["step"]) <= 1.0 * DC + tolerance for e in events)
+
 @variants(*each_rank_count(1, 2))
 def case_cone_short(liggghts, work, ranks):
     """A short penetration (3 D_c) with crushing in the zone that follows the tip, on 1 and 2 ranks:
@@ -376,10 +383,7 @@ def case_cone_short(liggghts, work, ranks):
     by_last_row = sum(1 for e in events if e["step"] <= history[-1]["step"])
     check(by_last_row == history[-1]["events"] and len(events) > 0,
           "%d events logged, %d of them by the last row, as it counts" % (len(events), by_last_row))
-    tolerance = 0.02 * DC
-    inside = [math.hypot(e["x"], e["y"]) <= 1.5 * DC + tolerance
-              and -1.5 * DC - tolerance <= e["z"] - tip_at(history, e["step"]) <= 1.0 * DC + tolerance for e in events]
-    check(all(inside), "every event inside the zone around the tip at its step")
+    check(all_in_zone(events, history), "every event inside the zone around the tip at its step")
     if has_vtk_dumps(liggghts):
         try:
             import vtk
@@ -539,8 +543,8 @@ def case_cone_resume(liggghts, work, ranks):
 @variants(*each_rank_count(2))
 def case_whole_chamber(liggghts, work, ranks):
     """The whole chamber (in.geometry's sector 360) on 2 ranks, the ranks' cut through the axis, 4 D_c
-    wide, and the quarter chamber of that width: the whole one's sand fills both sides of the axis from the lo walls at -half, about a quarter of the grains in
-    each quadrant; a push with crushing in the zone keeps the books and every tag unique, with every
+    wide, and the quarter chamber of that width: the whole one's sand fills both sides of the axis
+    from the lo walls at -half, about a quarter of the grains in each quadrant; a push with crushing in the zone keeps the books and every tag unique, with every
     event inside the zone; q_c is the whole cone's force over the whole cone's area, and it lies near
     the quarter chamber's q_c on the same grains' draw (the quarter's factor 4 on the whole cone would
     read four times it)."""
@@ -549,7 +553,7 @@ def case_whole_chamber(liggghts, work, ranks):
     for sector in (90, 360):
         folder = prepare_chamber(liggghts, os.path.join(work, str(sector)), ranks, sector=sector, width=4)
         push(liggghts, folder, ranks, crushing="region", vtk=0, depth=2, sector=sector, width=4)
-        history, n0, events = check_test_books(folder, "dense_region")
+        history, _, events = check_test_books(folder, "dense_region")
         q_c[sector] = sum(r["q_c"] for r in history if r["depth_Dc"] > 1.0) / sum(1 for r in history if r["depth_Dc"] > 1.0)
         if sector == 90:
             continue
@@ -565,10 +569,7 @@ def case_whole_chamber(liggghts, work, ranks):
         area = math.pi * DC ** 2 / 4
         worst = max(abs(r["q_c"] - r["F_cone"] / area) for r in history) / max(r["q_c"] for r in history)
         check(worst < 1e-6, "q_c = F_cone / (pi D_c^2 / 4) at every row, the whole cone's force (to %.1e)" % worst)
-        tolerance = 0.02 * DC
-        inside = [math.hypot(e["x"], e["y"]) <= 1.5 * DC + tolerance
-                  and -1.5 * DC - tolerance <= e["z"] - tip_at(history, e["step"]) <= 1.0 * DC + tolerance for e in events]
-        check(events and all(inside), "the whole chamber's %d events inside the zone around the tip" % len(events))
+        check(events and all_in_zone(events, history), "the whole chamber's %d events inside the zone around the tip" % len(events))
     ratio = q_c[360] / q_c[90]
     check(0.4 < ratio < 2.5, "q_c over 1 - 2 D_c: %.3g MPa in the whole chamber, %.3g in the quarter (ratio %.2f, "
           "within 0.4 - 2.5)" % (q_c[360] / 1e6, q_c[90] / 1e6, ratio))
