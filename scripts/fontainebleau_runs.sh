@@ -7,6 +7,7 @@
 # Environment: RANKS (2), LIGGGHTS (build/liggghts), EXTRA_VARS (further -var pairs for every test,
 # e.g. "-var neighbor_style multi"), PLOT (the figures' command: default /usr/bin/python3 post/plot.py;
 # setup.sh gives the installed crush-plot).
+# A test whose folder holds 'done' (a finished run) is kept, not run again: delete the folder to redo it.
 # Writes OUT_DIR/<test>/ (the deck's outputs and log), OUT_DIR/runtimes.csv (test, ranks, initial and
 # final particles, events, wall-clock seconds) and OUT_DIR/figures/*.png (post/plot.py).
 set -euo pipefail
@@ -34,6 +35,7 @@ for spec in $tests; do
   # EXTRA_VARS: further -var pairs for every test (for example '-var neighbor_style multi')
   read -r -a extra <<< "${EXTRA_VARS:-}"
   vars+=(${extra[@]+"${extra[@]}"})
+  if [ -f "$dir/done" ]; then echo "== $spec: done before ($dir/done)"; continue; fi
   rm -rf "$dir" && mkdir -p "$dir" && cp "$here"/examples/fontainebleau/in.* "$dir"/
   echo "== $spec: mpirun -np $ranks liggghts -in $deck ${vars[*]}"
   start=$(date +%s%N)
@@ -45,6 +47,7 @@ for spec in $tests; do
   events=$(($(cat "$dir"/events_*.csv | wc -l) - 1))
   final=$((initial + 13 * events))
   echo "$spec,$ranks,$initial,$final,$events,$seconds" >> "$out/runtimes.csv"
+  touch "$dir/done"
   echo "   $seconds s"
 done
 read -r -a plot <<< "${PLOT:-/usr/bin/python3 $here/post/plot.py}"

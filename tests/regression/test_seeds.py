@@ -4,6 +4,7 @@ needed).
 
   python3 test_seeds.py LIGGGHTS WORKDIR CASE"""
 import csv
+import math
 import os
 import subprocess
 import sys
@@ -14,6 +15,7 @@ from liggghts_run import main as test_main  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 TOOL = os.path.join(ROOT, "post", "seeds.py")
+UPSCALING = os.path.join(ROOT, "post", "upscaling_seeds.py")
 SEEDS = ("11", "22", "33", "44", "55")
 BASE = (0.40, 0.42, 0.38, 0.44, 0.36)  # the reference's porosity by seed: mean 0.40, se 0.01414
 
@@ -68,6 +70,73 @@ def case_known_effects(liggghts, work):
           and abs(float(ref["mean"]) - 0.40) < 1e-12 and "two rows of setting" in stderr,
           "N = 2 events +10 paired, resolved; the reference's mean %s over %s seeds (the second row of seed 11 dropped)"
           % (ref["mean"], ref["seeds"]))
+
+
+def stand_in_run(folder, test, n, porosity, events, grains=1000, setting_seed=None):
+    """A run folder as the decks leave it: a history from 0.2 to 99.5 MPa whose porosity is
+    porosity(log10 of the stress in MPa), K0 0.4 (O) and I_G 0.8; a grading at 100 MPa; the
+    SAMPLE line."""
+    os.makedirs(folder)
+    column = "sigma_z" if test == "O" else "p"
+    with open(os.path.join(folder, "history_%s%s.csv" % (test, n)), "w") as f:
+        f.write("step,%s,porosity,K0,I_G,events\n" % column)
+        for k in range(60):
+            mpa = 0.2 * (99.5 / 0.2) ** (k / 59.0)
+            f.write("%d,%.9g,%.9g,0.4,0.8,%d\n" % (k, mpa * 1e6, porosity(math.log10(mpa)), events * k // 59))
+    with open(os.path.join(folder, "gsd_%s%s_100MPa.csv" % (test, n)), "w") as f:
+        f.write("size_mm,percent_passing\n0.1,%.9g\n0.2,50\n0.45,100\n" % (10.0 + events / 100.0))
+    with open(os.path.join(folder, "screen.txt"), "w") as f:
+        f.write("SAMPLE N = %s: %d particles, porosity 0.4\n" % (n, grains))
+    if setting_seed:
+        with open(os.path.join(folder, "setting.csv"), "w") as f:
+            f.write("name,N,seed\nN%s,%s,%s\n" % (n, n, setting_seed))
+
+
+def case_upscaling(liggghts, work):
+    """post/upscaling_seeds.py on stand-in O runs at N = 1 and 2, three seeds each. N = 1's porosity
+    is 0.4 - 0.05 log10(sigma / MPa) plus the seed's offset (-0.01, 0, +0.01: se 0.00577). N = 2 adds
+    0.003 + 0.002 log10(sigma / MPa) to it, a change that grows to 0.007 at 100 MPa and is never
+    resolved against the seeds' spread (unpaired: se 0.00816); its events per grain are 0.30 where
+    N = 1's are 0.20, with a spread of 0.01: resolved. The seed comes from setting.csv or the folder's
+    _s<seed>. A second run of one test, N and seed is refused by name."""
+    del liggghts
+    offsets = {"11": -0.01, "22": 0.0, "33": 0.01}
+    folders = []
+    for seed, off in offsets.items():
+        k = int(seed) // 11 - 1
+        one = os.path.join(work, "O1_s%s" % seed)
+        stand_in_run(one, "O", "1", lambda x, o=off: 0.4 - 0.05 * x + o, 200 + 10 * (k - 1))
+        two = os.path.join(work, "N2_run%d" % k)  # its seed only in setting.csv
+        stand_in_run(two, "O", "2", lambda x, o=off: 0.4 - 0.05 * x + o + 0.003 + 0.002 * x, 300 + 10 * (k - 1),
+                     setting_seed=seed)
+        folders += [one, two]
+    out = os.path.join(work, "out")
+    proc = subprocess.run(["/usr/bin/python3", UPSCALING, "--out", out] + folders, stdout=subprocess.PIPE,
+                          stderr=subprocess.PIPE, universal_newlines=True)
+    check(proc.returncode == 0, "post/upscaling_seeds.py ran: %s" % proc.stderr[-400:])
+    with open(os.path.join(out, "upscaling_seeds.csv")) as f:
+        rows = dict(((r["N"], r["measure"]), r) for r in csv.DictReader(f))
+    n100 = rows[("2", "n_100MPa")]
+    check(abs(float(n100["change"]) - 0.007) < 1e-5 and abs(float(n100["change_se"]) - 0.0081650) < 1e-5
+          and n100["resolved"] == "no" and n100["seeds"] == "3",
+          "n at 100 MPa: change %s +- %s (%s), expected +0.007 +- 0.00816, not resolved"
+          % (n100["change"], n100["change_se"], n100["resolved"]))
+    n1 = rows[("2", "n_1MPa")]
+    check(abs(float(n1["change"]) - 0.003) < 1e-5, "n at 1 MPa: change %s, expected +0.003" % n1["change"])
+    curve = rows[("2", "n_curve_largest")]
+    check(abs(float(curve["change"]) - 0.003 - 0.002 * math.log10(99)) < 2e-4 and float(curve["at_MPa"]) > 90,
+          "the curve's largest difference %s at %s MPa, expected +0.007 near 99 MPa" % (curve["change"], curve["at_MPa"]))
+    events = rows[("2", "events_per_grain")]
+    check(abs(float(events["change"]) - 0.1) < 1e-9 and events["resolved"] == "yes",
+          "events per grain: change %s (%s), expected +0.1, resolved" % (events["change"], events["resolved"]))
+    k0 = rows[("1", "K0_mean")]
+    check(abs(float(k0["mean"]) - 0.4) < 1e-12, "K0 averaged over 1 - 100 MPa: %s, expected 0.4" % k0["mean"])
+    twin = os.path.join(work, "O1_twin_s22")
+    stand_in_run(twin, "O", "1", lambda x: 0.4, 200)
+    proc = subprocess.run(["/usr/bin/python3", UPSCALING, "--out", out] + folders + [twin], stdout=subprocess.PIPE,
+                          stderr=subprocess.PIPE, universal_newlines=True)
+    check(proc.returncode != 0 and "O1_twin_s22" in proc.stderr and "seed 22" in proc.stderr,
+          "a second O-1 of seed 22 refused by name: %s" % proc.stderr[-300:])
 
 
 if __name__ == "__main__":
