@@ -18,6 +18,7 @@ TOOLS = {
     "crush-calibrate": "calibrate",
     "crush-chamber-profiles": "chamber_profiles",
     "crush-cpt": "cpt_interpretation",
+    "crush-compression-seeds": "compression_seeds",
     "crush-critical-state": "critical_state",
     "crush-decomposition": "decomposition",
     "crush-penetration": "penetration",

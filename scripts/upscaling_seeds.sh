@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The paper's upscaling claim with seeds (doc/results.md, "Upscaling with seeds"): the oedometric and
 # isotropic tests at N = 1, 1.5 and 2, each with the seeds of SEEDS, run by scripts/fontainebleau_runs.sh
-# one round a seed, then compared with N = 1 by post/upscaling_seeds.py.
+# one round a seed, then compared with N = 1 by post/compression_seeds.py.
 #   bash scripts/upscaling_seeds.sh [OUT_DIR (default runs/upscaling)] [tests (default O1 O1.5 O2 I1 I1.5 I2)]
 # Environment: SEEDS (default the decks' 15485863 and the primes 179424673 275604541: none of the
 # grading's template seeds), RANKS (2), LIGGGHTS (build/liggghts).
@@ -20,4 +20,4 @@ for seed in ${SEEDS:-15485863 179424673 275604541}; do
   for t in $tests; do specs+=("$t:$seed"); done
   PLOT=true bash "$here/scripts/fontainebleau_runs.sh" "$out" "${specs[@]}"
 done
-/usr/bin/python3 "$here/post/upscaling_seeds.py" --out "$out" "$out"/[OI]*_s*/
+/usr/bin/python3 "$here/post/compression_seeds.py" --name upscaling --out "$out" "$out"/[OI]*_s*/

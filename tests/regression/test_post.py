@@ -18,7 +18,7 @@ sys.path.insert(0, ROOT)
 from post import TOOLS  # noqa: E402
 
 # The module each tool cannot start without (None: the standard library is enough for --help).
-NEEDS = {"calibrate": "numpy", "chamber_profiles": "numpy", "cpt_interpretation": None, "critical_state": "numpy",
+NEEDS = {"calibrate": "numpy", "chamber_profiles": "numpy", "compression_seeds": "numpy", "cpt_interpretation": None, "critical_state": "numpy",
          "decomposition": "numpy", "penetration": "matplotlib", "penetration_depth": None,
          "penetration_stats": None, "pile_stress": "matplotlib", "plot": "matplotlib", "ring_stress": None,
          "seeds": None, "summary": None}

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""post/seeds.py, the studies' seeds harness, on stand-in studies whose effects are known (no liggghts
-needed).
+"""post/seeds.py, the studies' seeds harness, and post/compression_seeds.py on stand-in studies and
+runs whose effects are known (no liggghts needed).
 
   python3 test_seeds.py LIGGGHTS WORKDIR CASE"""
 import csv
@@ -15,7 +15,7 @@ from liggghts_run import main as test_main  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 TOOL = os.path.join(ROOT, "post", "seeds.py")
-UPSCALING = os.path.join(ROOT, "post", "upscaling_seeds.py")
+COMPRESSION = os.path.join(ROOT, "post", "compression_seeds.py")
 SEEDS = ("11", "22", "33", "44", "55")
 BASE = (0.40, 0.42, 0.38, 0.44, 0.36)  # the reference's porosity by seed: mean 0.40, se 0.01414
 
@@ -72,17 +72,18 @@ def case_known_effects(liggghts, work):
           % (ref["mean"], ref["seeds"]))
 
 
-def stand_in_run(folder, test, n, porosity, events, grains=1000, setting_seed=None):
+def stand_in_run(folder, test, n, porosity, events, grains=1000, setting_seed=None, void_ratio=None):
     """A run folder as the decks leave it: a history from 0.2 to 99.5 MPa whose porosity is
-    porosity(log10 of the stress in MPa), K0 0.4 (O) and I_G 0.8; a grading at 100 MPa; the
-    SAMPLE line."""
+    porosity(log10 of the stress in MPa), K0 0.4 (O), I_G 0.8 and, where given, the void ratio
+    void_ratio(log10 of the stress in MPa); a grading at 100 MPa; the SAMPLE line."""
     os.makedirs(folder)
     column = "sigma_z" if test == "O" else "p"
     with open(os.path.join(folder, "history_%s%s.csv" % (test, n)), "w") as f:
-        f.write("step,%s,porosity,K0,I_G,events\n" % column)
+        f.write("step,%s,porosity,K0,I_G,events%s\n" % (column, ",void_ratio" if void_ratio else ""))
         for k in range(60):
             mpa = 0.2 * (99.5 / 0.2) ** (k / 59.0)
-            f.write("%d,%.9g,%.9g,0.4,0.8,%d\n" % (k, mpa * 1e6, porosity(math.log10(mpa)), events * k // 59))
+            f.write("%d,%.9g,%.9g,0.4,0.8,%d%s\n" % (k, mpa * 1e6, porosity(math.log10(mpa)), events * k // 59,
+                                                ",%.12g" % void_ratio(math.log10(mpa)) if void_ratio else ""))
     with open(os.path.join(folder, "gsd_%s%s_100MPa.csv" % (test, n)), "w") as f:
         f.write("size_mm,percent_passing\n0.1,%.9g\n0.2,50\n0.45,100\n" % (10.0 + events / 100.0))
     with open(os.path.join(folder, "screen.txt"), "w") as f:
@@ -92,8 +93,16 @@ def stand_in_run(folder, test, n, porosity, events, grains=1000, setting_seed=No
             f.write("name,N,seed\nN%s,%s,%s\n" % (n, n, setting_seed))
 
 
+def compression_seeds(out, *args, fails=False):
+    proc = subprocess.run(["/usr/bin/python3", COMPRESSION, "--out", out] + list(args), stdout=subprocess.PIPE,
+                          stderr=subprocess.PIPE, universal_newlines=True)
+    if not fails:
+        check(proc.returncode == 0, "post/compression_seeds.py ran: %s" % proc.stderr[-400:])
+    return proc
+
+
 def case_upscaling(liggghts, work):
-    """post/upscaling_seeds.py on stand-in O runs at N = 1 and 2, three seeds each. N = 1's porosity
+    """post/compression_seeds.py on stand-in O runs at N = 1 and 2, three seeds each. N = 1's porosity
     is 0.4 - 0.05 log10(sigma / MPa) plus the seed's offset (-0.01, 0, +0.01: se 0.00577). N = 2 adds
     0.003 + 0.002 log10(sigma / MPa) to it, a change that grows to 0.007 at 100 MPa and is never
     resolved against the seeds' spread (unpaired: se 0.00816); its events per grain are 0.30 where
@@ -111,9 +120,7 @@ def case_upscaling(liggghts, work):
                      setting_seed=seed)
         folders += [one, two]
     out = os.path.join(work, "out")
-    proc = subprocess.run(["/usr/bin/python3", UPSCALING, "--out", out] + folders, stdout=subprocess.PIPE,
-                          stderr=subprocess.PIPE, universal_newlines=True)
-    check(proc.returncode == 0, "post/upscaling_seeds.py ran: %s" % proc.stderr[-400:])
+    proc = compression_seeds(out, "--name", "upscaling", *folders)
     with open(os.path.join(out, "upscaling_seeds.csv")) as f:
         rows = dict(((r["N"], r["measure"]), r) for r in csv.DictReader(f))
     n100 = rows[("2", "n_100MPa")]
@@ -133,10 +140,43 @@ def case_upscaling(liggghts, work):
     check(abs(float(k0["mean"]) - 0.4) < 1e-12, "K0 averaged over 1 - 100 MPa: %s, expected 0.4" % k0["mean"])
     twin = os.path.join(work, "O1_twin_s22")
     stand_in_run(twin, "O", "1", lambda x: 0.4, 200)
-    proc = subprocess.run(["/usr/bin/python3", UPSCALING, "--out", out] + folders + [twin], stdout=subprocess.PIPE,
-                          stderr=subprocess.PIPE, universal_newlines=True)
+    proc = compression_seeds(out, *(folders + [twin]), fails=True)
     check(proc.returncode != 0 and "O1_twin_s22" in proc.stderr and "seed 22" in proc.stderr,
           "a second O-1 of seed 22 refused by name: %s" % proc.stderr[-300:])
+
+
+def case_readings(liggghts, work):
+    """post/compression_seeds.py --by-folder: two readings of the strengths, each a folder of O-2 and
+    I-2 runs with three seeds; the readings' runs are told apart by their folder and compared with
+    the reference reading's runs of the same test. The other reading's porosity is 0.02 higher at
+    every stress (resolved: se 0.00816) and its yield stress 2 MPa higher: the histories' void ratio
+    falls 0.02 a decade of stress up to y MPa and 0.30 a decade beyond, so the lines fitted to
+    0.3 - 3 MPa and above 50 MPa meet at y, 9 - 11 MPa in the reference. Without --by-folder the
+    two readings would be one setting: refused, since they share seeds."""
+    del liggghts
+    folders = []
+    for reading, dn, dy in (("clipped", 0.0, 0.0), ("normal", 0.02, 2.0)):
+        for k, seed in enumerate(("11", "22", "33")):
+            y = 9.0 + k + dy
+            for test in ("O", "I"):
+                folder = os.path.join(work, reading, "%s2_s%s" % (test, seed))
+                stand_in_run(folder, test, "2", lambda x, o=(k - 1) * 0.01 + dn: 0.4 - 0.05 * x + o, 300,
+                             void_ratio=lambda x, y=y: 0.6 - 0.02 * x - (0.28 * (x - math.log10(y)) if x > math.log10(y) else 0.0))
+                folders.append(folder)
+    out = os.path.join(work, "out")
+    compression_seeds(out, "--by-folder", "--reference", "folder=clipped", "--name", "readings", *folders)
+    with open(os.path.join(out, "readings_seeds.csv")) as f:
+        rows = dict(((r["test"], r["folder"], r["measure"]), r) for r in csv.DictReader(f))
+    for test in ("O", "I"):
+        n10 = rows[(test, "normal", "n_10MPa")]
+        check(abs(float(n10["change"]) - 0.02) < 1e-9 and n10["resolved"] == "yes",
+              "%s-2 normal against clipped, n at 10 MPa: %s (%s), expected +0.02, resolved" % (test, n10["change"], n10["resolved"]))
+        ref = rows[(test, "clipped", "yield_MPa")]
+        other = rows[(test, "normal", "yield_MPa")]
+        check(abs(float(ref["mean"]) - 10.0) < 1e-3 and abs(float(other["change"]) - 2.0) < 1e-3,
+              "%s-2 yield: clipped %s MPa (expected 10), normal's change %s (expected +2)" % (test, ref["mean"], other["change"]))
+    proc = compression_seeds(out, *folders, fails=True)
+    check(proc.returncode != 0 and "with seed" in proc.stderr, "the readings without --by-folder refused: %s" % proc.stderr[-200:])
 
 
 if __name__ == "__main__":
