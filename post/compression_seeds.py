@@ -36,6 +36,7 @@ import math
 import os
 import re
 import sys
+import warnings
 
 if not __package__:  # run as a file (python3 post/compression_seeds.py): the folder above post/ holds the package
     sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
@@ -179,9 +180,11 @@ def reference_of(key, groups, reference):
 
 
 def mean_se(arrays):
+    """The mean and standard error over the runs at each point; NaN where fewer than two runs reach it."""
     a = np.array(arrays)
     count = np.sum(np.isfinite(a), axis=0)
-    with np.errstate(invalid="ignore", divide="ignore"):
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", RuntimeWarning)  # points that one run alone reaches
         return np.nanmean(a, axis=0), np.nanstd(a, axis=0, ddof=1) / np.sqrt(count)
 
 
