@@ -20,7 +20,6 @@ Per setting (OUT_DIR/accuracy_seeds_settings.csv, post/seeds.py's statistics and
   - the cost: the runtime over the base's in the same round (seed), median and range of the rounds.
 Writes also accuracy_seeds_table.md and pareto_seeds.png (each error against the cost ratio, with
 its error bars, the reference's spread shaded)."""
-import csv
 import math
 import os
 import sys
@@ -31,7 +30,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 sys.path.insert(0, os.path.dirname(HERE))
 import accuracy_vs_cost as avc  # noqa: E402
-from post.seeds import change, resolved, statistics  # noqa: E402
+from post.seeds import change, resolved, statistics, write_csv  # noqa: E402
 
 import matplotlib  # noqa: E402
 
@@ -100,18 +99,6 @@ def errors(run, ref):
             "err_gsd_percent": float(np.max(np.abs(run["gsd"]["percent_passing"] - ref["passing"]))),
             "err_events_relative": abs(run["events"] / run["initial"] / ref["events_per_grain"] - 1.0),
             "err_yield_relative": abs(run["yield"] / ref["yield"] - 1.0)}
-
-
-def write_csv(path, rows):
-    """Rows of dicts, the columns in the order they first appear, numbers to 6 digits."""
-    columns = []
-    for row in rows:
-        columns += [k for k in row if k not in columns]
-    with open(path, "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=columns, lineterminator="\n")
-        w.writeheader()
-        for row in rows:
-            w.writerow({k: ("%.6g" % v if isinstance(v, float) else v) for k, v in row.items()})
 
 
 def main(out):

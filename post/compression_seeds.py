@@ -46,7 +46,7 @@ requires("compression_seeds", "numpy", "matplotlib")
 
 import numpy as np  # noqa: E402
 
-from post.seeds import change, resolved, statistics  # noqa: E402
+from post.seeds import change, resolved, statistics, write_csv  # noqa: E402
 
 DECK_SEED = "15485863"
 STRESS = {"O": "sigma_z", "I": "p"}  # the loading axis each test is read against
@@ -231,17 +231,6 @@ def compare(groups, reference):
             rows.append(dict(base, measure="passing_largest", seeds=len(by_seed), at_mm=where, change=d, change_se=se,
                              resolved=resolved(d, se), largest_change_over_se=worst))
     return rows
-
-
-def write_csv(path, rows):
-    columns = []
-    for row in rows:
-        columns += [k for k in row if k not in columns]
-    with open(path, "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=columns, lineterminator="\n")
-        w.writeheader()
-        for row in rows:
-            w.writerow(dict((k, "%.6g" % v if isinstance(v, float) else v) for k, v in row.items()))
 
 
 def markdown(rows, by_folder):

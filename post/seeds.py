@@ -99,6 +99,18 @@ def parse_reference(text, setting, groups):
     return matches[0]
 
 
+def write_csv(path, rows):
+    """Rows of dicts, the columns in the order they first appear, numbers to 6 digits."""
+    columns = []
+    for row in rows:
+        columns += [k for k in row if k not in columns]
+    with open(path, "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=columns, lineterminator="\n")
+        w.writeheader()
+        for row in rows:
+            w.writerow(dict((k, "%.6g" % v if isinstance(v, float) else v) for k, v in row.items()))
+
+
 def label(setting, key):
     return " ".join("%s=%s" % (c, v) for c, v in zip(setting, key))
 

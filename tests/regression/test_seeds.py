@@ -6,6 +6,7 @@ runs whose effects are known (no liggghts needed).
 import csv
 import math
 import os
+import shutil
 import subprocess
 import sys
 
@@ -75,7 +76,9 @@ def case_known_effects(liggghts, work):
 def stand_in_run(folder, test, n, porosity, events, grains=1000, setting_seed=None, void_ratio=None):
     """A run folder as the decks leave it: a history from 0.2 to 99.5 MPa whose porosity is
     porosity(log10 of the stress in MPa), K0 0.4 (O), I_G 0.8 and, where given, the void ratio
-    void_ratio(log10 of the stress in MPa); a grading at 100 MPa; the SAMPLE line."""
+    void_ratio(log10 of the stress in MPa); a grading at 100 MPa; the SAMPLE line. A folder left by
+    an earlier run of the test is replaced."""
+    shutil.rmtree(folder, ignore_errors=True)
     os.makedirs(folder)
     column = "sigma_z" if test == "O" else "p"
     with open(os.path.join(folder, "history_%s%s.csv" % (test, n)), "w") as f:
