@@ -30,6 +30,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 sys.path.insert(0, os.path.dirname(HERE))
 import accuracy_vs_cost as avc  # noqa: E402
+from post import compression_seeds  # noqa: E402
 from post.seeds import change, resolved, statistics, write_csv  # noqa: E402
 
 import matplotlib  # noqa: E402
@@ -45,15 +46,8 @@ REFERENCE = "N1"  # N = 1 at the base's knobs; --reference NAME: another setting
 
 
 def at(history, column, stress):
-    """The column at a vertical stress (Pa), interpolated against log(stress); at the last row where
-    the run ended within 2% below it (the last history row of a run to 100 MPa is at 99 - 99.7 MPa)."""
-    s, v = history["sigma_z"], history[column]
-    order = np.argsort(s)
-    log_s, v = np.log(s[order]), v[order]
-    x = math.log(stress)
-    if log_s[-1] < x <= log_s[-1] + math.log(1.02):
-        return float(v[-1])
-    return float(np.interp(x, log_s, v, left=np.nan, right=np.nan))
+    """The column at a vertical stress (Pa): post/compression_seeds.py's at()."""
+    return compression_seeds.at(history["sigma_z"], history[column], stress)
 
 
 def measures(run):

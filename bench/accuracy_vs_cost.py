@@ -35,7 +35,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-from post import plot  # noqa: E402
+from post import compression_seeds, plot  # noqa: E402
 
 PAPER_PFC3D_MINUTES = {1304: 31.0, 3084: 67.0, 10397: 183.0}  # Table 3, O-2, O-1.5, O-1, one core
 GRID = np.logspace(math.log10(2e5), 8, 60)
@@ -67,15 +67,9 @@ def on_grid(history, column, lo=2e5, smooth=False):
 
 
 def yield_stress(history):
-    """Intersection of the e - log10(sigma_v) lines fitted to 0.3-3 MPa and above 50 MPa (Pa)."""
-    s, e = history["sigma_z"], history["void_ratio"]
-    low = (s > 3e5) & (s < 3e6)
-    high = (s > 5e7)
-    if low.sum() < 2 or high.sum() < 2:
-        return float("nan")
-    a1, b1 = np.polyfit(np.log10(s[low]), e[low], 1)
-    a2, b2 = np.polyfit(np.log10(s[high]), e[high], 1)
-    return 10 ** ((b1 - b2) / (a2 - a1))
+    """Intersection of the e - log10(sigma_v) lines fitted to 0.3-3 MPa and above 50 MPa (Pa):
+    post/compression_seeds.py's reading of a compression curve."""
+    return compression_seeds.yield_stress(history["sigma_z"], history["void_ratio"])
 
 
 def load(folder):

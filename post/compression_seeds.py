@@ -85,7 +85,7 @@ def on_grid(stress, values, grid=GRID):
 
 def yield_stress(stress, void_ratio):
     """Where the e - log10(stress) lines fitted to 0.3 - 3 MPa and above 50 MPa meet (Pa); NaN where a
-    range has under two rows. bench/accuracy_vs_cost.py reads the oedometric curves the same way."""
+    range has under two rows. bench/accuracy_vs_cost.py reads the oedometric curves with it."""
     low, high = (stress > 3e5) & (stress < 3e6), stress > 5e7
     if low.sum() < 2 or high.sum() < 2:
         return float("nan")
@@ -171,7 +171,7 @@ def group(runs, by_folder):
     return out
 
 
-def reference_of(key, groups, reference):
+def reference_of(key, reference):
     """The reference setting of a setting's test: (test, N given, same folder) or (test, same N,
     folder given)."""
     what, value = reference
@@ -206,7 +206,7 @@ def compare(groups, reference):
     order = sorted(groups, key=lambda k: (k[0] == "I", k[2], float(k[1])))
     for key in order:
         by_seed = groups[key]
-        ref_key = reference_of(key, groups, reference)
+        ref_key = reference_of(key, reference)
         ref = groups.get(ref_key) if ref_key != key else None
         base = {"test": key[0], "N": key[1], "folder": key[2]}
         for m in measure_names(list(by_seed.values())):
@@ -341,7 +341,7 @@ def main(argv=None):
         sys.exit("compression_seeds.py: --reference folder=%s needs --by-folder" % reference[1])
     runs = [load(f) for f in a.runs]
     groups = group(runs, a.by_folder)
-    if not any(reference_of(k, groups, reference) == k for k in groups):
+    if not any(reference_of(k, reference) == k for k in groups):
         sys.exit("compression_seeds.py: no run is the reference %s=%s" % reference)
     os.makedirs(a.out, exist_ok=True)
     keep = ["test", "N"] + (["folder_name"] if a.by_folder else []) + ["seed"] + measure_names(runs)

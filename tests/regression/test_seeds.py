@@ -123,7 +123,7 @@ def case_upscaling(liggghts, work):
                      setting_seed=seed)
         folders += [one, two]
     out = os.path.join(work, "out")
-    proc = compression_seeds(out, "--name", "upscaling", *folders)
+    compression_seeds(out, "--name", "upscaling", *folders)
     with open(os.path.join(out, "upscaling_seeds.csv")) as f:
         rows = dict(((r["N"], r["measure"]), r) for r in csv.DictReader(f))
     n100 = rows[("2", "n_100MPa")]
