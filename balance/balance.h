@@ -10,11 +10,11 @@
      niter: bisection steps per cut (resolution 2^-niter of its span)
      stopthresh: the axes after the one that brings the imbalance to stopthresh or below are left
 
-   The processor grid stays; its planes move (comm->xsplit/ysplit/zsplit, uniform = 0) so that each
-   slab holds as many particles as the others (crush_shift_cuts.h), each cut at most to its
-   neighbouring old ones (the one hop of LIGGGHTS' exchange of atoms and of mesh elements). The atoms
-   move to their new processors at once, also right after read_restart; the next run starts with a
-   full setup (its 'pre no' too).
+   The processor grid stays; its planes move (balance_cuts.h: each slab holds as much weight as the
+   others, each cut at most to its neighbouring old ones, the one hop of LIGGGHTS' exchange of atoms
+   and of mesh elements). The atoms move to their new processors at once, also right after
+   read_restart; the next run starts with a full setup (its 'pre no' too). fix balance does the same
+   within a run.
 ------------------------------------------------------------------------- */
 #ifdef COMMAND_CLASS
 
@@ -26,7 +26,6 @@ CommandStyle(balance,Balance)
 #define LMP_BALANCE_H
 
 #include <string>
-#include <vector>
 
 #include "pointers.h"
 
@@ -38,19 +37,8 @@ class Balance : protected Pointers {
   void command(int, char **);
 
  private:
-  double *split(int dim) const;
-  void find_weights();
-  void count_neighbours();
-  std::vector<double> counts_below(int dim, const std::vector<double> &cuts) const;
-  std::vector<double> counts_per_processor() const;
-  void shift(int dim, int halvings);
   void migrate();
-  void report(double before, double after, const std::string &axes) const;
   void fail(const std::string &what) const;  // error->all, naming the command
-
-  std::vector<double> weight_;  // per local particle: 1, or 1 + its neighbour pairs (weight neighbors)
-  double total_weight_ = 0.0;   // over all processors
-  bool by_work_ = false;
 };
 
 }  // namespace LAMMPS_NS

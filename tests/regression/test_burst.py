@@ -57,21 +57,23 @@ def read_events(path):
     return [dict(zip(header, line.split(","))) for line in lines[1:]]
 
 
-def run_burst(liggghts, deck, work, case, ranks, extra=None):
-    """Runs a burst deck in work, with burst.data (and any extra files) beside it."""
+def run_burst(liggghts, deck, work, case, ranks, extra=None, variables=None):
+    """Runs a burst deck in work, with burst.data (and any extra files) beside it, and the deck's
+    further variables."""
     if os.path.isdir(work):
         shutil.rmtree(work)
     os.makedirs(work)
     types = write_data(os.path.join(work, "burst.data"))
     for name in extra or []:
         shutil.copy(name, work)
-    run_deck(liggghts, os.path.join(BURST, deck), work, {"case": case, "log": "events.csv", "out": "final.dump"},
-             ranks=ranks, keep=True)
+    run_deck(liggghts, os.path.join(BURST, deck), work,
+             dict({"case": case, "log": "events.csv", "out": "final.dump"}, **(variables or {})), ranks=ranks, keep=True)
     return types
 
 
-def check_run(work, case, ranks, types, thermo_from_restart=False):
-    """The invariants of a finished burst run in work."""
+def check_run(work, case, ranks, types, thermo_from_restart=False, straddle=True):
+    """The invariants of a finished burst run in work (straddle: some mothers lie on the equal slabs'
+    planes)."""
     n0 = CELLS ** 3
     # (the rows of fix crush's runs: in.burst_scale runs once before fix crush exists)
     thermo = [row for row in read_thermo(os.path.join(work, "log.liggghts")) if "crush[1]" in row]
@@ -103,7 +105,7 @@ def check_run(work, case, ranks, types, thermo_from_restart=False):
           "%d first-generation fragments" % (FRAGMENTS * len(breakable)))
     volume = sum(math.pi / 6 * (2 * r["radius"]) ** 3 for r in final)
     check(abs(volume + thermo[-1]["crush[2]"] - v0) / v0 < 1e-12, "final books balance to 1e-12")
-    if ranks > 1:
+    if ranks > 1 and straddle:
         # Grains within a radius of a processor boundary (x = L/2 on 2 and 4 ranks, L/3 and 2L/3 on 3)
         # have fragments on both sides: they migrate in the step they are born.
         box = CELLS * SPACING
@@ -260,6 +262,125 @@ def case_scale(liggghts, work, ranks):
         for a, b in zip(final, final2))
     check(same, "the continued run ends with the same %d particles and N" % len(final))
 
+
+LOW_LAYERS = 3  # in.burst_balance: the grains of the lattice's layers k = 0, 1, 2 (z < 2.5 spacings) break
+
+
+def low_types():
+    """in.burst_balance's types: 2 (breakable) in the lowest LOW_LAYERS layers along z, 1 elsewhere
+    (write_data's tags run x fastest, z slowest)."""
+    return {tag: 2 if (tag - 1) // CELLS ** 2 < LOW_LAYERS else 1 for tag in range(1, CELLS ** 3 + 1)}
+
+
+def balance_moves(work):
+    """fix balance's moves (its out file, balance.txt): (step, imbalance before, after, {axis: cuts})."""
+    moves = []
+    for line in open(os.path.join(work, "balance.txt")):
+        if line.startswith("#"):
+            continue
+        head, tail = line.split(": imbalance ", 1)
+        numbers = tail.split()
+        cuts, axis = {}, None
+        for word in tail.replace(",", " ").split():
+            if word in ("x", "y", "z"):
+                axis = word
+                cuts[axis] = []
+            elif axis and word != "cuts":
+                cuts[axis].append(float(word))
+        moves.append((int(head.split()[-1]), float(numbers[0]), float(numbers[2]), cuts))
+    return moves
+
+
+def work_per_processor(final, cuts):
+    """Each processor's work under the planes cuts ({axis: fractions of the box}; an axis without
+    cuts is not divided): 1 + the particle's neighbours closer than r_i + r_j + skin, across the
+    periodic faces too (as the fix weighs particles; skin 2e-5 m, in.burst_setup's neighbor)."""
+    import numpy as np
+    from scipy.spatial import cKDTree
+    box = CELLS * SPACING
+    xyz = np.array([[r[k] % box for k in "xyz"] for r in final])
+    radius = np.array([r["radius"] for r in final])
+    skin = 2e-5
+    pairs = cKDTree(xyz, boxsize=box).query_pairs(2 * radius.max() + skin, output_type="ndarray")
+    d = xyz[pairs[:, 0]] - xyz[pairs[:, 1]]
+    d -= box * np.round(d / box)
+    close = pairs[np.sum(d * d, axis=1) < (radius[pairs[:, 0]] + radius[pairs[:, 1]] + skin) ** 2]
+    weight = np.ones(len(final)) + np.bincount(close.ravel(), minlength=len(final))
+    index = np.zeros(len(final), dtype=int)
+    for dim, axis in enumerate("xyz"):
+        planes = cuts.get(axis, [])
+        index = index * (len(planes) + 1) + np.searchsorted(planes, xyz[:, dim] / box, side="right")
+    return np.bincount(index, weights=weight)
+
+
+def periodic_drift(final, other):
+    """The largest distance along an axis between the particles of two runs, row by row, taken across
+    the periodic faces (a particle on a face may be wrapped to either side)."""
+    box = CELLS * SPACING
+    return max(max(abs((a[k] - b[k]) - box * round((a[k] - b[k]) / box)) for k in "xyz") for a, b in zip(final, other))
+
+
+def imbalance(work_per_rank):
+    return max(work_per_rank) * len(work_per_rank) / sum(work_per_rank)
+
+
+@variants(*each_rank_count(1, 2, 3, 4, 8), timeout=600)
+def case_balance(liggghts, work, ranks):
+    """fix balance (doc/fix_balance.txt) every 20 steps, by work, in a burst that crowds the fragments
+    into the lowest quarter of the box along z (in.burst_balance): the books, tags and events of every
+    burst; on more than one rank the planes move, and the work each processor holds at the end under
+    the last planes (the test's own count of neighbour pairs from the final particles) is within 15% of
+    the mean, where equal slabs leave the fullest processor 1.4 times the mean or more; and the run ends
+    as the one without fix balance, positions within 1 nm: the same physics, summed in another order."""
+    ranks = int(ranks)
+    types = low_types()
+    balanced = os.path.join(work, "balanced")
+    run_burst(liggghts, "in.burst_balance", balanced, "half", ranks)
+    log, final = check_run(balanced, "half", ranks, types, straddle=False)
+    reference = os.path.join(work, "reference")
+    run_burst(liggghts, "in.burst_balance", reference, "half", ranks, variables={"balance_every": 0})
+    log0, final0 = check_run(reference, "half", ranks, types, straddle=False)
+    check(log == log0, "the same %d events (steps, tags, positions, fragment tags) as without fix balance" % len(log))
+    drift = periodic_drift(final, final0)
+    check([a["id"] for a in final] == [b["id"] for b in final0] and drift < 1e-9,
+          "the same %d particles at the end as without fix balance, positions within 1 nm (%.2g m)"
+          % (len(final), drift))
+    rows = read_thermo(os.path.join(balanced, "log.liggghts"))
+    thermo = rows[-1]
+    check(thermo["bal[4]"] - rows[-11]["bal[4]"] == 5, "checked at steps 20, 40, 60, 80 and 100 (%d checks from step "
+          "%d to 100)" % (thermo["bal[4]"] - rows[-11]["bal[4]"], rows[-11]["Step"]))
+    moves = balance_moves(balanced)
+    if ranks == 1:
+        check(not moves and thermo["bal"] == 1.0, "one rank: nothing to move, imbalance 1")
+        return
+    check(moves and moves[0][1] > 1.4, "the first move at step %s, from an imbalance of %s (the burst's crowding)"
+          % (moves[0][0] if moves else "-", moves[0][1] if moves else "-"))
+    last = moves[-1][3]
+    equal = {axis: [k / (len(c) + 1.0) for k in range(1, len(c) + 1)] for axis, c in last.items()}
+    held, uniform = imbalance(work_per_processor(final, last)), imbalance(work_per_processor(final, equal))
+    check(held <= 1.15 and uniform >= 1.4,
+          "%d ranks: the fullest processor's work at the end %.3f of the mean under the last planes %s, %.3f "
+          "under equal slabs (the fix's own reading after its last move: %.3f)" % (ranks, held, last, uniform, moves[-1][2]))
+
+
+@variants(*each_rank_count(2, 3, 4), timeout=600)
+def case_balance_restart(liggghts, work, ranks):
+    """in.burst_balance writes burst.restart after the burst step (replacement pending) and goes on;
+    in.burst_balance_restart reads it, with equal planes again, and fix balance moves them from there:
+    the same events, fragment tags and books, and the same particles at the end to 1 nm."""
+    ranks = int(ranks)
+    types = low_types()
+    first = os.path.join(work, "uninterrupted")
+    run_burst(liggghts, "in.burst_balance", first, "half", ranks)
+    log, final = check_run(first, "half", ranks, types, straddle=False)
+    second = os.path.join(work, "continued")
+    run_burst(liggghts, "in.burst_balance_restart", second, "half", ranks, [os.path.join(first, "burst.restart")])
+    log2, final2 = check_run(second, "half", ranks, types, straddle=False)
+    check(log2 == log, "the continued run logs the same %d events" % len(log))
+    check(balance_moves(second), "fix balance moved the planes in the continued run")
+    drift = periodic_drift(final, final2)
+    check([a["id"] for a in final] == [b["id"] for b in final2] and drift < 1e-9,
+          "the same %d particles at the end, positions within 1 nm (%.2g m)" % (len(final), drift))
 
 if __name__ == "__main__":
     test_main(globals(), sys.argv[1:])

@@ -398,6 +398,13 @@ def case_bad_input(liggghts, work):
          "balance: dimstr expects the axes x, y, z"),
         ("balance niter", [("pair_coeff      * *\n", "pair_coeff      * *\nbalance 1.0 shift x 2.5 1.0\n")],
          "balance: niter expects a whole number in [1, 60]"),
+        # fix balance's: its own Nevery and out, then the balance command's settings named by the fix
+        ("fix balance nevery", [("pair_coeff      * *\n", "pair_coeff      * *\nfix bal all balance 0 1.0 shift x 20 1.0\n")],
+         "fix balance (id bal): Nevery expects a whole number of steps >= 1, got '0'"),
+        ("fix balance weight", [("pair_coeff      * *\n", "pair_coeff      * *\nfix bal all balance 100 1.0 shift x 20 1.0 weight time\n")],
+         "fix balance (id bal): expected 'weight neighbors' after stopthresh, got 'weight time'"),
+        ("fix balance out", [("pair_coeff      * *\n", "pair_coeff      * *\nfix bal all balance 100 1.0 shift x 20 1.0 out /nonexistent/b.txt\n")],
+         "fix balance (id bal): cannot open the out file '/nonexistent/b.txt'"),
         # hooke/stiffness needs no E: fix crush still does, for E' of eq. 4
         ("no youngs modulus", [("fix             m1 all property/global youngsModulus peratomtype 7.8e9 7.8e9\n", ""),
                                (pair, "fix             m5 all property/global kn peratomtypepair 2 1e5 1e5 1e5 1e5\n"

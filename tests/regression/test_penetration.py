@@ -504,6 +504,29 @@ def case_cone_balance_work(liggghts, work):
     check_balanced_books(folder, "work")
 
 
+@variants(*each_rank_count(2, 3))
+def case_cone_fix_balance(liggghts, work, ranks):
+    """The short penetration on slabs across the axis with fix balance (balance_every 1000: the planes
+    move within the stretches, by work, along z; doc/fix_balance.txt) on 2 and 3 ranks: the meshes,
+    the contact histories and fix crush's grains cross the moving planes. It moves the planes, every
+    move leaves the fullest rank's work at most 5% over the mean after the first (one hop a move: 3
+    slabs need two), the books hold at every row, the tags are unique. Between moves the fullest rank
+    stays within the fix's threshold, 2% over the mean."""
+    ranks = int(ranks)
+    folder = prepare_chamber(liggghts, work, ranks)
+    push(liggghts, folder, ranks, crushing="region", vtk=0, label="fixbal", balance_every=1000, balance_dims="z",
+         balance_weight=1, grid="1 1 *", progress_every=5000)
+    moves = [line for line in open(os.path.join(folder, "balance_fixbal.txt")) if line.startswith("step ")]
+    after = [float(line.split("->")[1].split()[0]) for line in moves]
+    before = [float(line.split("imbalance")[1].split()[0]) for line in moves]
+    check(len(moves) >= 2 and all("largest work" in line for line in moves) and before[0] >= 1.5,
+          "%d moves of the planes, each by work, the first at the setup from equal slabs (%.3f: the sand lies in "
+          "the lowest part of the box)" % (len(moves), before[0] if moves else 0))
+    check(max(after[2:] or [0]) <= 1.05 and all(b > 1.02 for b in before), "the fullest rank's work at most 5%% over the mean after each move but the "
+          "first two (%s)" % ", ".join("%.3f" % a for a in after))
+    check_balanced_books(folder, "fixbal")
+
+
 @variants(*each_rank_count(1, 2))
 def case_cone_resume(liggghts, work, ranks):
     """A test killed right after a checkpoint resumes (-var resume 1) to the same history and events
