@@ -7,9 +7,11 @@
 # RANKS ranks (default 2), alternated in ROUNDS rounds (default 2). The balanced run adds
 #   fix bal all balance 1000 1.05 shift xyz 20 1.0 weight neighbors out balance.txt
 # (doc/fix_balance.txt) and prints the fix's imbalance (the fullest rank's work over the mean) at
-# every check to imbalance.txt. Prints each round's times, events, the balanced run's largest
-# imbalance after step 2,000 and each run's particles and pair times per rank at the end, then the
-# median of the in-round ratios balanced / equal slabs.
+# every check to imbalance.txt. Prints each round's times, events, each run's particles per rank at
+# the end and pair seconds per rank over the run (patches/0010), the balanced run's largest imbalance
+# right after a check from step 3,000 on and before a move (the shrink-wrapped box stretches between
+# checks, and the planes are fractions of it), then the median of the in-round ratios balanced /
+# equal slabs.
 #   bash bench/conveyor_balance.sh [ROUNDS] [OUT_DIR (default runs/conveyor_balance)]
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -43,8 +45,8 @@ timed() {  # timed FOLDER: seconds of the run
   awk -v a="$start" -v b="$(date +%s%N)" 'BEGIN {printf "%.1f", (b - a) / 1e9}'
 }
 
-ranks_line() {  # ranks_line FOLDER: the last run's particles (min, max) and pair seconds (min, max) per rank
-  awk '/^Nlocal:/ {n = $5 " - " $3} /^Pair  time per processor/ {p = $6 " - " $8} END {print "particles per rank " n ", pair s per rank " p}' "$1/log.liggghts"
+ranks_line() {  # ranks_line FOLDER: the run's particles per rank at the end (min - max) and pair seconds per rank (min - max)
+  awk '/^Nlocal:/ {n = $6 " - " $4} /^Pair  time per processor/ {p = $6 " - " $8} END {print "particles per rank " n ", pair s per rank " p}' "$1/log.liggghts"
 }
 
 ratios=()
@@ -54,8 +56,9 @@ for round in $(seq "$rounds"); do
   else t_bal=$(timed "$out/balanced"); t_equal=$(timed "$out/equal"); fi
   ev_equal=$(($(wc -l < "$out/equal/crush_events.csv") - 1)); ev_bal=$(($(wc -l < "$out/balanced/crush_events.csv") - 1))
   worst=$(awk 'NR > 3 && $1 + 0 > m {m = $1 + 0} END {printf "%.3f", m}' "$out/balanced/imbalance.txt")
+  drift=$(awk '/^step/ && $2 + 0 >= 3000 {b = $4 + 0; if (b > m) m = b} END {printf "%.3f", m}' "$out/balanced/balance.txt")
   r=$(ratio "$t_bal" "$t_equal")
   ratios+=("$r")
-  echo "round $round: equal slabs $t_equal s ($ev_equal events; $(ranks_line "$out/equal")), fix balance $t_bal s ($ev_bal events; $(ranks_line "$out/balanced")), largest imbalance by work after step 2000: $worst, $(grep -c '^step' "$out/balanced/balance.txt") moves: balanced / equal $r"
+  echo "round $round: equal slabs $t_equal s ($ev_equal events; $(ranks_line "$out/equal")), fix balance $t_bal s ($ev_bal events; $(ranks_line "$out/balanced")), imbalance by work after each check from step 3000 at most $worst, before a move from step 3000 at most $drift, $(grep -c '^step' "$out/balanced/balance.txt") moves: balanced / equal $r"
 done
 summary "conveyor with crushing, $ranks ranks: fix balance / equal slabs" "${ratios[@]}"
