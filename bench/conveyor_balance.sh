@@ -19,30 +19,16 @@ rounds=${1:-2}
 out=$(mkdir -p "${2:-$here/runs/conveyor_balance}" && cd "${2:-$here/runs/conveyor_balance}" && pwd)
 ranks=${RANKS:-2}
 liggghts=${LIGGGHTS:-$here/build/liggghts}
-tutorial=$(dirname "$liggghts")/liggghts-3.8.0/examples/LIGGGHTS/Tutorials_public/conveyor
 source "$here/scripts/mpi_env.sh"
 source "$here/bench/rounds.sh"
-[ -f "$tutorial/in.conveyor" ] || { echo "no conveyor tutorial in $tutorial (build first)"; exit 1; }
+source "$here/bench/conveyor_deck.sh"
 
 deck() {  # deck FOLDER BALANCE(0|1): the tutorial with crushing and multi, with fix balance or not
-  rm -rf "$1" && cp -r "$tutorial" "$1"
-  sed -i -e "s/^neighbor\t0.01 bin/neighbor\t0.01 multi/" -e 's/^run\t\t\t140000 upto/run\t\t\t25000 upto/' \
-         -e 's/^dump/#dump/' "$1/in.conveyor"
-  grep -q "^neighbor	0.01 multi" "$1/in.conveyor" && grep -q "^run			25000 upto" "$1/in.conveyor" \
-    || { echo "the conveyor tutorial changed: its neighbor or run line is not the one edited here"; exit 1; }
-  sed -i '/^pair_coeff/a fix crush all crush sigma_lim0 3e5 cv 0.5 weibull_m 10 d0 0.05 seed 1234567 dmin 0.005 log crush_events.csv' \
-      "$1/in.conveyor"
+  conveyor_deck multi "$1"
   [ "$2" = 1 ] || return 0
   sed -i -e '/^fix crush all crush/a fix bal all balance 1000 1.05 shift xyz 20 1.0 weight neighbors out balance.txt' \
          -e '/^fix crush all crush/a variable imbalance equal f_bal' \
          -e '/^fix crush all crush/a fix bal_trace all print 1000 "${imbalance}" file imbalance.txt screen no' "$1/in.conveyor"
-}
-
-timed() {  # timed FOLDER: seconds of the run
-  local start; start=$(date +%s%N)
-  (cd "$1" && mpirun -np "$ranks" "$liggghts" -in in.conveyor -log log.liggghts > screen.txt 2>&1) \
-    || { tail -5 "$1/screen.txt"; exit 1; }
-  awk -v a="$start" -v b="$(date +%s%N)" 'BEGIN {printf "%.1f", (b - a) / 1e9}'
 }
 
 ranks_line() {  # ranks_line FOLDER: the run's particles per rank at the end (min - max) and pair seconds per rank (min - max)
