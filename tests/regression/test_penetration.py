@@ -510,8 +510,8 @@ def case_cone_fix_balance(liggghts, work, ranks):
     move within the stretches, by work, along z; doc/fix_balance.txt) on 2 and 3 ranks: the meshes,
     the contact histories and fix crush's grains cross the moving planes. It moves the planes, every
     move leaves the fullest rank's work at most 5% over the mean after the first (one hop a move: 3
-    slabs need two), the books hold at every row, the tags are unique. Between moves the fullest rank
-    stays within the fix's threshold, 2% over the mean."""
+    slabs need two), every move starts above the fix's threshold (2% over the mean, to the four
+    digits the out file prints), the books hold at every row, the tags are unique."""
     ranks = int(ranks)
     folder = prepare_chamber(liggghts, work, ranks)
     push(liggghts, folder, ranks, crushing="region", vtk=0, label="fixbal", balance_every=1000, balance_dims="z",
@@ -522,8 +522,9 @@ def case_cone_fix_balance(liggghts, work, ranks):
     check(len(moves) >= 2 and all("largest work" in line for line in moves) and before[0] >= 1.5,
           "%d moves of the planes, each by work, the first at the setup from equal slabs (%.3f: the sand lies in "
           "the lowest part of the box)" % (len(moves), before[0] if moves else 0))
-    check(max(after[2:] or [0]) <= 1.05 and all(b > 1.02 for b in before), "the fullest rank's work at most 5%% over the mean after each move but the "
-          "first two (%s)" % ", ".join("%.3f" % a for a in after))
+    check(max(after[2:] or [0]) <= 1.05 and all(b >= 1.02 for b in before),
+          "the fullest rank's work at most 5%% over the mean after each move but the first two (%s), each move from "
+          "above 1.02 (%s)" % (", ".join("%.3f" % a for a in after), ", ".join("%.4f" % b for b in before)))
     check_balanced_books(folder, "fixbal")
 
 
