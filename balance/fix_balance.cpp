@@ -21,7 +21,7 @@ using namespace FixConst;
 
 FixBalance::FixBalance(LAMMPS *lmp, int narg, char **arg) :
   Fix(lmp, narg, arg), every_(0), now_(1.0), before_(1.0), after_(1.0), moves_(0), checks_(0),
-  cuts_moved_(false), out_(NULL)
+  out_(NULL)
 {
   const std::string who = std::string("fix balance (id ") + id + ")";
   long long every = 0;
@@ -65,7 +65,8 @@ void FixBalance::init()
   if (domain->triclinic) error->fix_error(FLERR, this, "a triclinic box is not supported");
 }
 
-// The run's setup exchanges the particles and sets up the communication after this (Verlet::setup).
+// A run's setup (Verlet::setup), write_restart and write_data call this, then set up the communication
+// and exchange the particles themselves.
 void FixBalance::setup_pre_exchange()
 {
   rebalance();
@@ -77,10 +78,9 @@ void FixBalance::setup_pre_exchange()
 void FixBalance::pre_exchange()
 {
   if (update->ntimestep < next_reneighbor) return;
-  rebalance();
   // The step's exchange and ghosts need the new sub-domains; Verlet redoes this itself only when the
   // box changes.
-  if (cuts_moved_) {
+  if (rebalance()) {
     domain->set_local_box();
     comm->setup();
     if (neighbor->style) neighbor->setup_bins();
@@ -88,7 +88,8 @@ void FixBalance::pre_exchange()
   schedule();
 }
 
-void FixBalance::rebalance()
+// Whether the planes moved.
+bool FixBalance::rebalance()
 {
   // the particles in the box, the box around the particles (shrink-wrapped): the cuts are fractions of it
   domain->pbc();
@@ -96,16 +97,15 @@ void FixBalance::rebalance()
   const BalanceCuts::Outcome out = cuts_->balance();
   checks_++;
   now_ = out.after;
-  cuts_moved_ = !out.moved.empty();
-  if (cuts_moved_) {
-    before_ = out.before;
-    after_ = out.after;
-    moves_++;
-    if (out_) {
-      fprintf(out_, "step " BIGINT_FORMAT ": %s\n", update->ntimestep, cuts_->describe(out).c_str());
-      fflush(out_);
-    }
+  if (out.moved.empty()) return false;
+  before_ = out.before;
+  after_ = out.after;
+  moves_++;
+  if (out_) {
+    fprintf(out_, "step " BIGINT_FORMAT ": %s\n", update->ntimestep, cuts_->describe(out).c_str());
+    fflush(out_);
   }
+  return true;
 }
 
 void FixBalance::schedule()

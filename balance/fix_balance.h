@@ -44,7 +44,7 @@ class FixBalance : public Fix {
   double compute_vector(int);
 
  private:
-  void rebalance();
+  bool rebalance();  // whether the planes moved
   void schedule();  // the next checked step: the next multiple of every_
 
   std::unique_ptr<BalanceCuts> cuts_;
@@ -52,7 +52,6 @@ class FixBalance : public Fix {
   double now_;             // imbalance after the last check
   double before_, after_;  // of the last move
   long moves_, checks_;
-  bool cuts_moved_;        // by the last check
   FILE *out_;              // the moves (out keyword), on proc 0
 };
 

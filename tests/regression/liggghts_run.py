@@ -118,6 +118,27 @@ def read_dump(path):
 SKIPPED = 77  # exit status of a test that cannot run in this build (CTest's SKIP_RETURN_CODE)
 
 
+def read_balance_moves(path):
+    """fix balance's moves, from its out file (doc/fix_balance.txt): one dict a move with its step, the
+    imbalance before and after, the planes {axis: cuts} and whether it weighed by work."""
+    moves = []
+    for line in open(path):
+        if line.startswith("#"):
+            continue
+        head, tail = line.split(": imbalance ", 1)
+        numbers = tail.split()
+        cuts, axis = {}, None
+        for word in tail.replace(",", " ").split():
+            if word in ("x", "y", "z"):
+                axis = word
+                cuts[axis] = []
+            elif axis and word != "cuts":
+                cuts[axis].append(float(word))
+        moves.append({"step": int(head.split()[-1]), "before": float(numbers[0]), "after": float(numbers[2]),
+                      "cuts": cuts, "by_work": "largest work" in tail})
+    return moves
+
+
 def skip(reason):
     """Ends a test that this build cannot run (e.g. VTK output without VTK), as skipped."""
     print("SKIPPED: " + reason)

@@ -16,6 +16,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from liggghts_run import check, each_rank_count, read_dump, read_thermo, run_deck, variants  # noqa: E402
+from liggghts_run import read_balance_moves  # noqa: E402
 from liggghts_run import main as test_main  # noqa: E402
 
 BURST = os.path.join(os.path.dirname(os.path.abspath(__file__)), "burst")
@@ -273,22 +274,8 @@ def low_types():
 
 
 def balance_moves(work):
-    """fix balance's moves (its out file, balance.txt): (step, imbalance before, after, {axis: cuts})."""
-    moves = []
-    for line in open(os.path.join(work, "balance.txt")):
-        if line.startswith("#"):
-            continue
-        head, tail = line.split(": imbalance ", 1)
-        numbers = tail.split()
-        cuts, axis = {}, None
-        for word in tail.replace(",", " ").split():
-            if word in ("x", "y", "z"):
-                axis = word
-                cuts[axis] = []
-            elif axis and word != "cuts":
-                cuts[axis].append(float(word))
-        moves.append((int(head.split()[-1]), float(numbers[0]), float(numbers[2]), cuts))
-    return moves
+    """fix balance's moves in the burst decks' out file, balance.txt."""
+    return read_balance_moves(os.path.join(work, "balance.txt"))
 
 
 def work_per_processor(final, cuts):
@@ -353,14 +340,14 @@ def case_balance(liggghts, work, ranks):
     if ranks == 1:
         check(not moves and thermo["bal"] == 1.0, "one rank: nothing to move, imbalance 1")
         return
-    check(moves and moves[0][1] > 1.4, "the first move at step %s, from an imbalance of %s (the burst's crowding)"
-          % (moves[0][0] if moves else "-", moves[0][1] if moves else "-"))
-    last = moves[-1][3]
+    check(moves and moves[0]["before"] > 1.4, "the first move at step %s, from an imbalance of %s (the burst's "
+          "crowding)" % (moves[0]["step"] if moves else "-", moves[0]["before"] if moves else "-"))
+    last = moves[-1]["cuts"]
     equal = {axis: [k / (len(c) + 1.0) for k in range(1, len(c) + 1)] for axis, c in last.items()}
     held, uniform = imbalance(work_per_processor(final, last)), imbalance(work_per_processor(final, equal))
     check(held <= 1.15 and uniform >= 1.4,
           "%d ranks: the fullest processor's work at the end %.3f of the mean under the last planes %s, %.3f "
-          "under equal slabs (the fix's own reading after its last move: %.3f)" % (ranks, held, last, uniform, moves[-1][2]))
+          "under equal slabs (the fix's own reading after its last move: %.3f)" % (ranks, held, last, uniform, moves[-1]["after"]))
 
 
 @variants(*each_rank_count(2, 3, 4), timeout=600)

@@ -18,7 +18,7 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from liggghts_run import check, each_rank_count, printed, read_thermo, run_deck, variants  # noqa: E402
 from liggghts_run import main as test_main  # noqa: E402
-from liggghts_run import read_dump  # noqa: E402
+from liggghts_run import read_balance_moves, read_dump  # noqa: E402
 from test_checkpoint import kill_after  # noqa: E402
 from test_vtk import has_vtk_dumps  # noqa: E402
 
@@ -516,10 +516,10 @@ def case_cone_fix_balance(liggghts, work, ranks):
     folder = prepare_chamber(liggghts, work, ranks)
     push(liggghts, folder, ranks, crushing="region", vtk=0, label="fixbal", balance_every=1000, balance_dims="z",
          balance_weight=1, grid="1 1 *", progress_every=5000)
-    moves = [line for line in open(os.path.join(folder, "balance_fixbal.txt")) if line.startswith("step ")]
-    after = [float(line.split("->")[1].split()[0]) for line in moves]
-    before = [float(line.split("imbalance")[1].split()[0]) for line in moves]
-    check(len(moves) >= 2 and all("largest work" in line for line in moves) and before[0] >= 1.5,
+    moves = read_balance_moves(os.path.join(folder, "balance_fixbal.txt"))
+    after = [m["after"] for m in moves]
+    before = [m["before"] for m in moves]
+    check(len(moves) >= 2 and all(m["by_work"] for m in moves) and before[0] >= 1.5,
           "%d moves of the planes, each by work, the first at the setup from equal slabs (%.3f: the sand lies in "
           "the lowest part of the box)" % (len(moves), before[0] if moves else 0))
     check(max(after[2:] or [0]) <= 1.05 and all(b >= 1.02 for b in before),
@@ -557,10 +557,10 @@ def case_cone_fix_balance_resume(liggghts, work):
     n0 = grains0(folder)
     check(all(r["particles"] == n0 + 13 * r["events"] for r in resumed),
           "particles = %d + 13 x events at every row after the resume (%d events)" % (n0, resumed[-1]["events"]))
-    moves = [line for line in open(os.path.join(folder, "balance_killed.txt")) if line.startswith("step ")]
-    check(moves and int(moves[0].split()[1].rstrip(":")) == newest,
+    moves = read_balance_moves(os.path.join(folder, "balance_killed.txt"))
+    check(moves and moves[0]["step"] == newest,
           "the resumed run's fix balance moved the planes from equal slabs at its setup, step %s (%d moves)"
-          % (moves[0].split()[1].rstrip(":") if moves else "-", len(moves)))
+          % (moves[0]["step"] if moves else "-", len(moves)))
 
 
 @variants(*each_rank_count(1, 2))
