@@ -528,6 +528,41 @@ def case_cone_fix_balance(liggghts, work, ranks):
     check_balanced_books(folder, "fixbal")
 
 
+COLLECTIVES = os.path.join(os.path.dirname(os.path.abspath(__file__)), "collectives", "count_collectives.c")
+
+
+@variants(*each_rank_count(2))
+def case_cone_collectives(liggghts, work, ranks):
+    """The global collectives of the short penetration's steps on 2 ranks, counted by an MPI
+    interposer (collectives/count_collectives.c, preloaded: each step's calls on rank 0, a step
+    delimited by fix wall/servo's reduction): an ordinary step makes 7 (the distance check with the
+    meshes' rebuild requests, the servo walls, dt/stiffness, fix crush, and the three meshes' force
+    and torque in one reduction each), where LIGGGHTS 3.8.0 made 16 (each mesh's bounding box and
+    rebuild flag in reductions of their own, its force and torque in two: patches/0016). The books
+    hold and the tags are unique."""
+    ranks = int(ranks)
+    library = os.path.join(work, "libcount_collectives.so")
+    os.makedirs(work, exist_ok=True)
+    subprocess.run(["mpicc", "-shared", "-fPIC", "-O2", "-o", library, COLLECTIVES], check=True)
+    folder = prepare_chamber(liggghts, work, ranks)
+    counts = os.path.join(folder, "collectives.txt")
+    settings = dict(CHAMBER, v=2, crushing="region", vtk=0, label="coll")
+    command = ["mpiexec", "-n", str(ranks), "--oversubscribe", "-x", "LD_PRELOAD=" + library,
+               "-x", "COUNT_COLLECTIVES_OUT=" + counts, liggghts, "-in", "in.cone", "-log", "log.liggghts"]
+    for name, value in settings.items():
+        command += ["-var", name, str(value)]
+    proc = subprocess.run(command, cwd=folder, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, universal_newlines=True)
+    check(proc.returncode == 0 and "ERROR" not in proc.stdout, "in.cone ran under the interposer:\n" + proc.stdout[-2000:])
+    histogram = dict(tuple(int(w) for w in line.split()) for line in open(counts))
+    steps = sum(histogram.values())
+    ordinary = max(histogram, key=histogram.get)
+    check(steps > 10000 and histogram[ordinary] > 0.9 * steps and ordinary <= 7,
+          "%d of %d steps make %d collectives (at most 7; 16 without patches/0016); the others: %s"
+          % (histogram[ordinary], steps, ordinary,
+             ", ".join("%d x %d" % (n, k) for k, n in sorted(histogram.items()) if k != ordinary)))
+    check_balanced_books(folder, "coll")
+
+
 @variants(ranks=2, timeout=900)
 def case_cone_fix_balance_resume(liggghts, work):
     """A test with fix balance (balance_every 1000, by work, slabs along z) killed right after a
