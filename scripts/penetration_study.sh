@@ -161,7 +161,9 @@ done
 # reference (the uncrushable chambers' tests, dense at 100 and 400 kPa), pristine (chambers drawn with
 # distribution normal: no zero-strength grains, no consolidation crushing; crushing in the zone and
 # none), pile_refined (the closed-ended pile, crushing in the zone), weak_refined (grains ten times
-# weaker, sigma_lim0 = 0.5 GPa, chamber and test: crushing in the zone and none). Seeds 1 - 3 each;
+# weaker, sigma_lim0 = 0.5 GPa, chamber and test: crushing in the zone and none), pristine_stress
+# (the pristine chambers, dense and loose at 100 and 400 kPa, crushing in the zone and, at dense
+# 100 kPa, none: the density effect and the stress exponent without the zero-strength grains). Seeds 1 - 3 each;
 # everywhere_refined, crushing everywhere in the dense chamber at 100 kPa (the coarse zones' events
 # too), seed 1 (refined_N34_everywhere_s2 and _s3 run by name).
 for k in 1 2 3; do
@@ -182,8 +184,16 @@ for k in 1 2 3; do
   for c in region 0; do
     spec[refined_N34_pristine_${c}_s$k]=dense:34:$c:$v:10:2:normal:1e5:$seed:scaled:4::refine=1,distribution=normal
     group[pristine]+=" refined_N34_pristine_${c}_s$k"
+    group[pristine_stress]+=" refined_N34_pristine_${c}_s$k"
     spec[refined_N34_weak_${c}_s$k]=dense:34:$c:$v:10:2:normal_clipped_originals:1e5:$seed:scaled:4::refine=1,sigma_lim0=5e8
     group[weak_refined]+=" refined_N34_weak_${c}_s$k"
+  done
+  for p in 1 4; do
+    for d in dense loose; do
+      [ "$d$p" = dense1 ] && continue
+      spec[refined_N34_pristine_${d}_${p}00kPa_s$k]=$d:34:region:$v:10:2:normal:${p}e5:$seed:scaled:4::refine=1,distribution=normal
+      group[pristine_stress]+=" refined_N34_pristine_${d}_${p}00kPa_s$k"
+    done
   done
   spec[refined_N34_everywhere_s$k]=dense:34:1:$v:10:2:normal_clipped_originals:1e5:$seed:scaled:4::refine=1
   [ "$k" -gt 1 ] || group[everywhere_refined]+=" refined_N34_everywhere_s$k"
