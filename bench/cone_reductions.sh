@@ -14,10 +14,7 @@ rounds=${2:-5} ranks=${3:-2}
 after=${LIGGGHTS:-$here/build/liggghts}
 source "$here/scripts/mpi_env.sh"
 source "$here/bench/rounds.sh"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cp -r "$here/examples/fontainebleau" "$here/examples/penetration" "$work/"
-cd "$work/penetration"
+source "$here/bench/penetration_work.sh"
 vars=(-var N 80 -var width 6 -var depth 3 -var below 2 -var sigma_lim0 5e8)
 mpirun -np "$ranks" --oversubscribe "$after" -in in.chamber "${vars[@]}" -var density dense -log chamber.log > chamber.txt 2>&1 \
   || { tail -5 chamber.txt; exit 1; }

@@ -13,10 +13,7 @@ rounds=${1:-3} n=${2:-34} depth=${3:-1} ranks=${4:-2}
 liggghts=${LIGGGHTS:-$here/build/liggghts}
 source "$here/scripts/mpi_env.sh"
 source "$here/bench/rounds.sh"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cp -r "$here/examples/fontainebleau" "$here/examples/penetration" "$work/"
-cd "$work/penetration"
+source "$here/bench/penetration_work.sh"
 vars=(-var N "$n" -var refine 1 -var depth "$depth" -var vtk 0 -var checkpoint_every 0)
 mpirun -np "$ranks" "$liggghts" -in in.chamber "${vars[@]}" -log chamber.log > chamber.txt 2>&1 || { tail -5 chamber.txt; exit 1; }
 grep '^CHAMBER .* N = ' chamber.txt

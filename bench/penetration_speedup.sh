@@ -13,10 +13,7 @@ here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 rounds=${1:-3} n=${2:-80} depth=${3:-8} width=${4:-10}
 liggghts=${LIGGGHTS:-$here/build/liggghts}
 source "$here/scripts/mpi_env.sh"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cp -r "$here/examples/fontainebleau" "$here/examples/penetration" "$work/"
-cd "$work/penetration"
+source "$here/bench/penetration_work.sh"
 vars=(-var N "$n" -var width "$width" -var depth "$depth" -var v 2 -var vtk 0 -var checkpoint_every 0)
 mpirun -np 2 "$liggghts" -in in.chamber "${vars[@]}" -log chamber.log > chamber.txt 2>&1 || { tail -5 chamber.txt; exit 1; }
 grep '^CHAMBER .* N = ' chamber.txt
