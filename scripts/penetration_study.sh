@@ -162,8 +162,8 @@ done
 # distribution normal: no zero-strength grains, no consolidation crushing; crushing in the zone and
 # none), pile_refined (the closed-ended pile, crushing in the zone), weak_refined (grains ten times
 # weaker, sigma_lim0 = 0.5 GPa, chamber and test: crushing in the zone and none), pristine_stress
-# (the pristine chambers, dense and loose at 100 and 400 kPa, crushing in the zone and, at dense
-# 100 kPa, none: the density effect and the stress exponent without the zero-strength grains). Seeds 1 - 3 each;
+# (the pristine chambers, dense and loose at 100 and 400 kPa, crushing in the zone and, dense at 100
+# and 400 kPa, none: the density effect and the stress exponent without the zero-strength grains). Seeds 1 - 3 each;
 # everywhere_refined, crushing everywhere in the dense chamber at 100 kPa (the coarse zones' events
 # too), seed 1 (refined_N34_everywhere_s2 and _s3 run by name).
 for k in 1 2 3; do
@@ -195,6 +195,8 @@ for k in 1 2 3; do
       group[pristine_stress]+=" refined_N34_pristine_${d}_${p}00kPa_s$k"
     done
   done
+  spec[refined_N34_pristine_0_400kPa_s$k]=dense:34:0:$v:10:2:normal:4e5:$seed:scaled:4::refine=1,distribution=normal
+  group[pristine_stress]+=" refined_N34_pristine_0_400kPa_s$k"
   spec[refined_N34_everywhere_s$k]=dense:34:1:$v:10:2:normal_clipped_originals:1e5:$seed:scaled:4::refine=1
   [ "$k" -gt 1 ] || group[everywhere_refined]+=" refined_N34_everywhere_s$k"
   spec[refined_N34_pile_s$k]=dense:34:region:$v:10:2:normal_clipped_originals:1e5:$seed:scaled:4:tip_shape=flat,stress_every=0.5:refine=1
