@@ -16,7 +16,7 @@ import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from liggghts_run import check, each_rank_count, printed, read_thermo, run_deck, variants  # noqa: E402
+from liggghts_run import check, deck_command, each_rank_count, printed, read_thermo, run_deck, variants  # noqa: E402
 from liggghts_run import main as test_main  # noqa: E402
 from liggghts_run import read_balance_moves, read_dump  # noqa: E402
 from test_checkpoint import kill_after  # noqa: E402
@@ -546,11 +546,9 @@ def case_cone_collectives(liggghts, work, ranks):
     subprocess.run(["mpicc", "-shared", "-fPIC", "-O2", "-o", library, COLLECTIVES], check=True)
     folder = prepare_chamber(liggghts, work, ranks)
     counts = os.path.join(folder, "collectives.txt")
-    settings = dict(CHAMBER, v=2, crushing="region", vtk=0, label="coll")
-    command = ["mpiexec", "-n", str(ranks), "--oversubscribe", "-x", "LD_PRELOAD=" + library,
-               "-x", "COUNT_COLLECTIVES_OUT=" + counts, liggghts, "-in", "in.cone", "-log", "log.liggghts"]
-    for name, value in settings.items():
-        command += ["-var", name, str(value)]
+    command = deck_command(liggghts, "in.cone", dict(CHAMBER, v=2, crushing="region", vtk=0, label="coll"), ranks)
+    at = command.index(liggghts)  # the interposer, for the ranks mpiexec starts
+    command[at:at] = ["-x", "LD_PRELOAD=" + library, "-x", "COUNT_COLLECTIVES_OUT=" + counts]
     proc = subprocess.run(command, cwd=folder, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, universal_newlines=True)
     check(proc.returncode == 0 and "ERROR" not in proc.stdout, "in.cone ran under the interposer:\n" + proc.stdout[-2000:])
     histogram = dict(tuple(int(w) for w in line.split()) for line in open(counts))
