@@ -163,7 +163,10 @@ done
 # none), pile_refined (the closed-ended pile, crushing in the zone), weak_refined (grains ten times
 # weaker, sigma_lim0 = 0.5 GPa, chamber and test: crushing in the zone and none), pristine_stress
 # (the pristine chambers, dense and loose at 100 and 400 kPa, crushing in the zone and, dense at 100
-# and 400 kPa, none: the density effect and the stress exponent without the zero-strength grains). Seeds 1 - 3 each;
+# and 400 kPa, none: the density effect and the stress exponent without the zero-strength grains),
+# pristine_resolution, pristine_width and pristine_whole (the pristine chamber at D_c / d50 = 10, 20
+# and 30 D_c wide, and whole, each beside the pristine chamber at 5, 10 D_c wide, quarter), pristine_pile (the
+# closed-ended pile in the pristine chamber at 5, crushing in the zone). Seeds 1 - 3 each;
 # everywhere_refined, crushing everywhere in the dense chamber at 100 kPa (the coarse zones' events
 # too), seed 1 (refined_N34_everywhere_s2 and _s3 run by name).
 for k in 1 2 3; do
@@ -197,6 +200,20 @@ for k in 1 2 3; do
   done
   spec[refined_N34_pristine_0_400kPa_s$k]=dense:34:0:$v:10:2:normal:4e5:$seed:scaled:4::refine=1,distribution=normal
   group[pristine_stress]+=" refined_N34_pristine_0_400kPa_s$k"
+  # the pristine chamber's own studies, against refined_N34_pristine_region_s$k: D_c / d50 = 10 (the
+  # resolution group's zones), 20 and 30 D_c wide, and whole
+  pristine=normal:1e5:$seed:scaled:4::refine=1,distribution=normal
+  spec[refined_N17_pristine_s$k]=dense:17:region:$(v_at_I 17):10:2:$pristine,fine_radius=1.5,coarsen=3
+  group[pristine_resolution]+=" refined_N34_pristine_region_s$k refined_N17_pristine_s$k"
+  group[pristine_width]+=" refined_N34_pristine_region_s$k"
+  for w in 20 30; do
+    spec[refined_N34_pristine_w${w}_s$k]=dense:34:region:$v:$w:2:$pristine
+    group[pristine_width]+=" refined_N34_pristine_w${w}_s$k"
+  done
+  spec[refined_N34_pristine_whole_s$k]=dense:34:region:$v:10:2:$pristine,sector=360
+  group[pristine_whole]+=" refined_N34_pristine_region_s$k refined_N34_pristine_whole_s$k"
+  spec[refined_N34_pristine_pile_s$k]=dense:34:region:$v:10:2:normal:1e5:$seed:scaled:4:tip_shape=flat,stress_every=0.5:refine=1,distribution=normal
+  group[pristine_pile]+=" refined_N34_pristine_pile_s$k"
   spec[refined_N34_everywhere_s$k]=dense:34:1:$v:10:2:normal_clipped_originals:1e5:$seed:scaled:4::refine=1
   [ "$k" -gt 1 ] || group[everywhere_refined]+=" refined_N34_everywhere_s$k"
   spec[refined_N34_pile_s$k]=dense:34:region:$v:10:2:normal_clipped_originals:1e5:$seed:scaled:4:tip_shape=flat,stress_every=0.5:refine=1
