@@ -165,7 +165,8 @@ done
 # (the pristine chambers, dense and loose at 100 and 400 kPa, crushing in the zone and, dense at 100
 # and 400 kPa, none: the density effect and the stress exponent without the zero-strength grains),
 # pristine_resolution, pristine_width and pristine_whole (the pristine chamber at D_c / d50 = 10, 20
-# and 30 D_c wide, and whole, each beside the pristine chamber at 5, 10 D_c wide, quarter), pristine_pile (the
+# and 30 D_c wide, and whole, each beside the pristine chamber at 5, 10 D_c wide, quarter), pristine_wider
+# (the width study's next steps, 40 and 50 D_c), pristine_pile (the
 # closed-ended pile in the pristine chamber at 5, crushing in the zone). Seeds 1 - 3 each;
 # everywhere_refined, crushing everywhere in the dense chamber at 100 kPa (the coarse zones' events
 # too), seed 1 (refined_N34_everywhere_s2 and _s3 run by name).
@@ -206,9 +207,10 @@ for k in 1 2 3; do
   spec[refined_N17_pristine_s$k]=dense:17:region:$(v_at_I 17):10:2:$pristine,fine_radius=1.5,coarsen=3
   group[pristine_resolution]+=" refined_N34_pristine_region_s$k refined_N17_pristine_s$k"
   group[pristine_width]+=" refined_N34_pristine_region_s$k"
-  for w in 20 30; do
+  for w in 20 30 40 50; do
     spec[refined_N34_pristine_w${w}_s$k]=dense:34:region:$v:$w:2:$pristine
-    group[pristine_width]+=" refined_N34_pristine_w${w}_s$k"
+    if [ "$w" -le 30 ]; then group[pristine_width]+=" refined_N34_pristine_w${w}_s$k"
+    else group[pristine_wider]+=" refined_N34_pristine_w${w}_s$k"; fi
   done
   spec[refined_N34_pristine_whole_s$k]=dense:34:region:$v:10:2:$pristine,sector=360
   group[pristine_whole]+=" refined_N34_pristine_region_s$k refined_N34_pristine_whole_s$k"
