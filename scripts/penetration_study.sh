@@ -165,9 +165,9 @@ done
 # (the pristine chambers, dense and loose at 100 and 400 kPa, crushing in the zone and, dense at 100
 # and 400 kPa, none: the density effect and the stress exponent without the zero-strength grains),
 # pristine_resolution, pristine_width and pristine_whole (the pristine chamber at D_c / d50 = 10, 20
-# and 30 D_c wide, and whole, each beside the pristine chamber at 5, 10 D_c wide, quarter), pristine_wider
-# (the width study's next steps, 40 and 50 D_c), pristine_pile (the
-# closed-ended pile in the pristine chamber at 5, crushing in the zone). Seeds 1 - 3 each;
+# and 30 D_c wide, and whole, each beside the pristine chamber at 5, 10 D_c wide, quarter),
+# pristine_wider (the width study's next steps, 40 and 50 D_c), pristine_pile (the closed-ended pile
+# in the pristine chamber at 5, crushing in the zone). Seeds 1 - 3 each;
 # everywhere_refined, crushing everywhere in the dense chamber at 100 kPa (the coarse zones' events
 # too), seed 1 (refined_N34_everywhere_s2 and _s3 run by name).
 for k in 1 2 3; do
