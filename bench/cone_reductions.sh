@@ -1,11 +1,13 @@
 #!/usr/bin/env bash
-# What the cone test's fewer global reductions (patches/0016) buy: the same cone test run by a liggghts
-# built without that patch (BEFORE) and by this build, alternated in ROUNDS rounds on RANKS ranks. The
-# scene is test_penetration's small chamber (N = 80, 6 D_c wide, 670 grains; 3 D_c at 2 m/s, crushing in
-# the zone): few particles a rank, as on many ranks, where a step's waits weigh most. Each run writes its
-# final particles to 17 digits; the bench says whether the two builds' trajectories are the same to the
-# bit, then prints each round's times and the median of the in-round ratios (this build over BEFORE).
-# A liggghts without the patch: a worktree at the commit before it, built by scripts/setup.sh --no-run.
+# What a step's fewer global reductions buy (patches/0016; fix crush's events agreed at the rebuilds):
+# the same cone test run by a liggghts built without the change (BEFORE) and by this build, alternated
+# in ROUNDS rounds on RANKS ranks. The scene is test_penetration's small chamber (N = 80, 6 D_c wide,
+# 670 grains; 3 D_c at 2 m/s, crushing in the zone): few particles a rank, as on many ranks, where a
+# step's waits weigh most. Each run writes its final particles to 17 digits; the bench says whether the
+# two builds' trajectories are the same to the bit, then prints each round's times and the median of
+# the in-round ratios (this build over BEFORE).
+# BEFORE: a liggghts without the change, e.g. a worktree at the commit before it, built by
+# scripts/setup.sh --no-run.
 #   bash bench/cone_reductions.sh BEFORE [ROUNDS=5] [RANKS=2]
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -34,6 +36,6 @@ for round in $(seq "$rounds"); do
   same=$(cmp -s exact_before.txt exact_after.txt && echo "the same to the bit" || echo "DIFFERENT")
   r=$(ratio "$t_after" "$t_before")
   ratios+=("$r")
-  echo "round $round: without patches/0016 $t_before s, with it $t_after s: $r; final particles $same ($(($(wc -l < exact_after.txt) - 9)) particles)"
+  echo "round $round: BEFORE $t_before s, this build $t_after s: $r; final particles $same ($(($(wc -l < exact_after.txt) - 9)) particles)"
 done
-summary "cone test on $ranks ranks: with patches/0016 / without" "${ratios[@]}"
+summary "cone test on $ranks ranks: this build / BEFORE" "${ratios[@]}"

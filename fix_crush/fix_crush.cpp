@@ -466,6 +466,7 @@ void FixCrush::setup(int)
   draw_missing_strengths();
   refresh_needed_ = true;
   force_check_ = true;
+  if (!found_.empty()) neighbor->request_rebuild();  // events found at the last run's last step
 }
 
 void FixCrush::end_of_step()
@@ -488,46 +489,63 @@ void FixCrush::end_of_step()
   local_max_ratio_ = local_max;
   max_ratio_step_ = -1;  // reduced over processors when output asks for it, not every step
   if (settings_.adaptive) schedule_next_check();
-  // One reduction: the events, and the particle count. Crushing only adds particles, and the
-  // particles that left the box are counted as they leave (count_outflow): fewer than that means
-  // particles vanished by other means, and the volume books would no longer balance.
-  bigint local_counts[2] = {static_cast<bigint>(mothers.size()), atom->nlocal}, counts[2];
-  MPI_Allreduce(local_counts, counts, 2, MPI_LMP_BIGINT, MPI_SUM, world);
-  if (counts[1] < particle_count_) {
+  // No reduction here: a processor whose grains broke asks for the next step's rebuild, and the
+  // request rides on the neighbour list's distance check (Neighbor::request_rebuild). The events
+  // are agreed at that rebuild's pre_exchange, where every processor meets.
+  if (mothers.empty()) return;
+  record_events(mothers);
+  neighbor->request_rebuild();
+}
+
+// This processor's mothers, as the events all processors will agree on (agree_on_events).
+void FixCrush::record_events(const std::vector<int> &mothers)
+{
+  double **data = fix_data_->array_atom;
+  for (int i : mothers)
+    found_.push_back({atom->tag[i], static_cast<int>(data[i][GENERATION]), 2.0 * atom->radius[i], data[i][RATIO],
+                      {atom->x[i][0], atom->x[i][1], atom->x[i][2]}});
+}
+
+// Collective, at every rebuild (and before a restart is written): one gather tells each
+// processor's events and particles. Crushing only adds particles, and the particles that left
+// the box are counted as they leave (count_outflow): during a run, fewer than that means particles
+// vanished by other means, and the volume books would no longer balance. Then every processor
+// gets every event, sorted by tag: the order that numbers the fragments.
+void FixCrush::agree_on_events(bool count_particles)
+{
+  const int nprocs = comm->nprocs, size = static_cast<int>(sizeof(Event));
+  const int mine[2] = {static_cast<int>(found_.size()) * size, atom->nlocal};
+  std::vector<int> all(2 * nprocs);
+  MPI_Allgather(mine, 2, MPI_INT, all.data(), 2, MPI_INT, world);
+  std::vector<int> counts(nprocs), displs(nprocs);
+  int total = 0;
+  bigint particles = 0;
+  for (int p = 0; p < nprocs; p++) {
+    counts[p] = all[2 * p];
+    displs[p] = total;
+    total += counts[p];
+    particles += all[2 * p + 1];
+  }
+  if (count_particles) check_particle_count(particles);
+  if (total == 0) return;
+  // Events are plain structs, identical in layout on every processor: gathered as bytes.
+  std::vector<Event> events(total / size);
+  MPI_Allgatherv(found_.data(), mine[0], MPI_BYTE, events.data(), counts.data(), displs.data(), MPI_BYTE, world);
+  found_.clear();
+  pending_.insert(pending_.end(), events.begin(), events.end());
+  std::sort(pending_.begin(), pending_.end(), [](const Event &a, const Event &b) { return a.tag < b.tag; });
+}
+
+void FixCrush::check_particle_count(bigint particles)
+{
+  if (particles < particle_count_) {
     char msg[400];
     snprintf(msg, sizeof(msg), "fix crush: " BIGINT_FORMAT " particles vanished during the run without leaving the box "
              "(a fix or command deleted them): the volume books no longer balance; fix crush counts only the "
-             "particles that leave through a fixed boundary ('thermo_modify lost')", particle_count_ - counts[1]);
+             "particles that leave through a fixed boundary ('thermo_modify lost')", particle_count_ - particles);
     error->all(FLERR, msg);
   }
-  particle_count_ = counts[1];
-  if (counts[0] == 0) return;
-  pending_ = gather_events(mothers);
-  next_reneighbor = update->ntimestep + 1;
-}
-
-// All processors get every event, sorted by tag: the order that numbers the fragments. Events are
-// plain structs, identical in layout on every processor: gathered as bytes.
-std::vector<FixCrush::Event> FixCrush::gather_events(const std::vector<int> &local_mothers)
-{
-  std::vector<Event> mine;
-  double **data = fix_data_->array_atom;
-  for (int i : local_mothers)
-    mine.push_back({atom->tag[i], static_cast<int>(data[i][GENERATION]), 2.0 * atom->radius[i], data[i][RATIO],
-                    {atom->x[i][0], atom->x[i][1], atom->x[i][2]}});
-  const int nprocs = comm->nprocs, size = static_cast<int>(sizeof(Event));
-  std::vector<int> counts(nprocs), displs(nprocs);
-  int count = static_cast<int>(mine.size()) * size;
-  MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
-  int total = 0;
-  for (int p = 0; p < nprocs; p++) {
-    displs[p] = total;
-    total += counts[p];
-  }
-  std::vector<Event> events(total / size);
-  MPI_Allgatherv(mine.data(), count, MPI_BYTE, events.data(), counts.data(), displs.data(), MPI_BYTE, world);
-  std::sort(events.begin(), events.end(), [](const Event &a, const Event &b) { return a.tag < b.tag; });
-  return events;
+  particle_count_ = particles;
 }
 
 // The agreed events are replaced before the exchange moves their fragments (fix_crush_replacement.cpp);
@@ -535,7 +553,8 @@ std::vector<FixCrush::Event> FixCrush::gather_events(const std::vector<int> &loc
 // (fix_crush_outflow.cpp).
 void FixCrush::pre_exchange()
 {
-  if (next_reneighbor == update->ntimestep && !pending_.empty()) {
+  agree_on_events(true);
+  if (!pending_.empty()) {
     const double start = MPI_Wtime();
     replace_mothers();
     replace_seconds_ += MPI_Wtime() - start;
@@ -703,6 +722,9 @@ struct RestartOutflow {  // version 3
 
 void FixCrush::write_restart(FILE *fp)
 {
+  // Every processor writes a restart: the events found at this step travel in it. Between runs a
+  // command may have deleted particles: the next run's setup counts them again.
+  agree_on_events(false);
   const RestartState state = {events_total_, static_cast<bigint>(pending_.size()), checked_steps_, removed_volume_,
                               smallest_fragment_size_, initial_largest_size_, next_tag_, settings_.seed};
   RestartHead head = {{0}, kRestartVersion};

@@ -98,7 +98,9 @@ class FixCrush : public Fix {
   void advise_neighbor_multi();
   double smallest_possible_radius() const;
   double smallest_radius() const;
-  std::vector<Event> gather_events(const std::vector<int> &local_mothers);
+  void record_events(const std::vector<int> &mothers);
+  void agree_on_events(bool count_particles);
+  void check_particle_count(bigint particles);
   void log_events(const std::vector<Event> &events, tagint first_new_tag);
   void open_log();
   void check_particles() const;
@@ -174,7 +176,8 @@ class FixCrush : public Fix {
   class Irregular *irregular_;
   FILE *log_;
 
-  std::vector<Event> pending_;       // agreed at end_of_step, replaced at the next pre_exchange
+  std::vector<Event> found_;         // this processor's, found at end_of_step, agreed at the next rebuild
+  std::vector<Event> pending_;       // agreed by all processors, replaced at that rebuild's pre_exchange
   bigint events_total_;
   double removed_volume_;
   double outflow_volume_;            // the volume of the particles that left the box (m^3)
@@ -187,7 +190,7 @@ class FixCrush : public Fix {
   double initial_largest_size_;      // the largest particle at the first setup, d / N (m): I_G's d_max
   tagint next_tag_;                  // the first tag never given out
   double replace_seconds_;           // wall time spent in replace_mothers(), for the event cost
-  bigint particle_count_;            // particles at the last check: losses stop the run
+  bigint particle_count_;            // particles at the last rebuild: losses stop the run
   bool initialized_;                 // init() ran: 'run pre no' right after the fix skips it
   bool refresh_needed_;              // clear every load slot at the next pre_force (see refresh_recorder)
   bool recording_;                   // the recorder is attached (with 'every' > 1: on check steps only)
