@@ -166,8 +166,10 @@ done
 # and 400 kPa, none: the density effect and the stress exponent without the zero-strength grains),
 # pristine_resolution, pristine_width and pristine_whole (the pristine chamber at D_c / d50 = 10, 20
 # and 30 D_c wide, and whole, each beside the pristine chamber at 5, 10 D_c wide, quarter),
-# pristine_wider (the width study's next steps, 40 and 50 D_c), pristine_pile (the closed-ended pile
-# in the pristine chamber at 5, crushing in the zone). Seeds 1 - 3 each;
+# pristine_wider (the width study's next steps, 40 and 50 D_c), pristine_base and pristine_deep (at
+# 40 D_c: the rigid base 5 D_c below the final tip, and tests of 8 D_c, each beside the 40 D_c tests),
+# pristine_pile (the closed-ended pile in the pristine chamber at 5, crushing in the zone). Seeds 1 - 3
+# each;
 # everywhere_refined, crushing everywhere in the dense chamber at 100 kPa (the coarse zones' events
 # too), seed 1 (refined_N34_everywhere_s2 and _s3 run by name).
 for k in 1 2 3; do
@@ -212,6 +214,12 @@ for k in 1 2 3; do
     if [ "$w" -le 30 ]; then group[pristine_width]+=" refined_N34_pristine_w${w}_s$k"
     else group[pristine_wider]+=" refined_N34_pristine_w${w}_s$k"; fi
   done
+  # what the rise of q_c over the last D_c at 40 D_c is: the rigid base 5 D_c below the final tip
+  # instead of 2.5, and a test of 8 D_c (its chamber 10.5 D_c high)
+  spec[refined_N34_pristine_w40_below5_s$k]=dense:34:region:$v:40:2:$pristine,below=5
+  group[pristine_base]+=" refined_N34_pristine_w40_s$k refined_N34_pristine_w40_below5_s$k"
+  spec[refined_N34_pristine_w40_d8_s$k]=dense:34:region:$v:40:2:normal:1e5:$seed:scaled:8::refine=1,distribution=normal
+  group[pristine_deep]+=" refined_N34_pristine_w40_s$k refined_N34_pristine_w40_d8_s$k"
   spec[refined_N34_pristine_whole_s$k]=dense:34:region:$v:10:2:$pristine,sector=360
   group[pristine_whole]+=" refined_N34_pristine_region_s$k refined_N34_pristine_whole_s$k"
   spec[refined_N34_pristine_pile_s$k]=dense:34:region:$v:10:2:normal:1e5:$seed:scaled:4:tip_shape=flat,stress_every=0.5:refine=1,distribution=normal
