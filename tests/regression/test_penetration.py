@@ -848,18 +848,25 @@ def case_depth_bins(liggghts, work):
     """post/penetration_depth.py on two stand-in histories whose q_c is known in each bin of depth:
     test a reads 1 MPa on 0 - 1 D_c and 3 MPa on 1 - 2 (rows at 0.25, 0.75, 1.25, 1.75 D_c; 1 and 1
     MPa, then 2 and 4), test b 2 and 5 MPa and stops before 2 D_c; a row at 2 D_c falls in no bin
-    of --to 2: the bins' means 1.5 +- 0.5 and 4.0 +- 1.0 MPa over the two tests."""
+    of --to 2: the bins' means 1.5 +- 0.5 and 4.0 +- 1.0 MPa over the two tests. --csv writes each
+    test's bins under its case, the study's folder above penetration/ (a_s1, b_s1)."""
     del liggghts
     paths = []
     for name, rows in (("a", ((0.25, 1), (0.75, 1), (1.25, 2), (1.75, 4), (2.0, 99))), ("b", ((0.5, 2), (1.5, 5)))):
-        path = os.path.join(work, "penetration_%s_N34.csv" % name)
+        folder = os.path.join(work, "%s_s1" % name, "penetration")
+        os.makedirs(folder, exist_ok=True)
+        path = os.path.join(folder, "penetration_%s_N34.csv" % name)
         with open(path, "w") as f:
             f.write("step,depth_Dc,q_c\n" + "".join("%d,%g,%g\n" % (k, d, q * 1e6) for k, (d, q) in enumerate(rows)))
         paths.append(path)
-    out = subprocess.run(["/usr/bin/python3", os.path.join(ROOT, "post", "penetration_depth.py")] + paths + ["--to", "2"],
+    table = os.path.join(work, "depth.csv")
+    out = subprocess.run(["/usr/bin/python3", os.path.join(ROOT, "post", "penetration_depth.py")] + paths + ["--to", "2", "--csv", table],
                          stdout=subprocess.PIPE, universal_newlines=True, check=True).stdout.splitlines()
     check(out == ["0 - 1 D_c: 2 tests, q_c 1.500 +- 0.500 MPa", "1 - 2 D_c: 2 tests, q_c 4.000 +- 1.000 MPa"],
           "bins: %s" % out)
+    with open(table) as f:
+        rows = f.read().splitlines()
+    check(rows == ["case,from_Dc,to_Dc,q_c_MPa", "a_s1,0,1,1", "a_s1,1,2,3", "b_s1,0,1,2", "b_s1,1,2,5"], "the bins' rows: %s" % rows)
 
 
 def case_stats_ratio_power(liggghts, work):
