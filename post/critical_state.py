@@ -15,7 +15,8 @@ the CPU time, or the wall-clock time where there is none). For each test, from i
     (triaxial compression);
   - the peak q/p and its axial strain, e and I_G at the start of shearing, the crushing events during
     shearing;
-and fits, for each variant and for rotation0 and normal together (one contact law, two gradings):
+and fits, for each variant, for rotation0 and normal together (one contact law, two gradings) and for
+each variant with its pre-crushed samples (variant_pre<P>: one reading, gradings set apart at one p'):
   - the critical state line e_cs = Gamma - lambda ln(p'/1 kPa) of each sample (dense, loose) and of
     both together, and two curved lines through the same points (fit_curved);
   - the critical state plane e_cs = Gamma_0 - lambda ln(p'/1 kPa) - beta I_G of both samples together,
@@ -257,14 +258,21 @@ POOLED = ("rotation0", "normal")  # one contact law, two strength readings: two 
 
 
 def groups(tests):
-    """The groups fitted: each variant's tests on the sigma3 path, and those of rotation0 and normal
+    """The groups fitted: each variant's tests on the sigma3 path, those of rotation0 and normal
     together (grains that do not rotate, with and without the zero-strength sixth: the gradings
-    differ by what broke at the first load, the plane's test)."""
+    differ by what broke at the first load, the plane's test), and each variant with its pre-crushed
+    samples (variant_pre<P>, in.triaxial's precrush: gradings that differ at one p' within one
+    strength reading)."""
     out = [(v, [t for t in tests if t["variant"] == v and t["path"] == "sigma3"])
            for v in sorted({t["variant"] for t in tests})]
     pooled = [t for t in tests if t["variant"] in POOLED and t["path"] == "sigma3"]
     if {t["variant"] for t in pooled} == set(POOLED):
         out.append((" + ".join(POOLED), pooled))
+    # one reading, several gradings at one p': a variant with its pre-crushed samples (variant_pre<P>)
+    for base in sorted({t["variant"] for t in tests if "_pre" not in t["variant"]}):
+        family = [t for t in tests if t["path"] == "sigma3" and t["variant"].split("_pre")[0] == base]
+        if any("_pre" in t["variant"] for t in family) and any(t["variant"] == base for t in family):
+            out.append((base + " + pre-crushed", family))
     return [(name, group) for name, group in out if group]
 
 

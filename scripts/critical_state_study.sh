@@ -6,8 +6,10 @@
 #   bash scripts/critical_state_study.sh [OUT_DIR (default runs/critical_state)] [cases...]
 # A case is variant:sample:p0[:path[:seed]]: variant rotation0 (grains do not rotate, the decks'
 # default), rolling (free rotation against LIGGGHTS' rolling resistance epsd2, mu_r 0.7,
-# doc/results.md) or normal (as rotation0, with the strength draw 'normal' of fix crush: no grain of
-# zero strength, doc/results.md), sample dense or loose (in.prepare with friction 0.5), p0 the cell pressure in MPa,
+# doc/results.md), normal (as rotation0, with the strength draw 'normal' of fix crush: no grain of
+# zero strength, doc/results.md) or none (as rotation0, no grain breaks: the uncrushable control), each
+# with an optional suffix _pre<P> (the sample pre-crushed: compressed isotropically to P MPa, unloaded
+# to p0 and sheared there, in.triaxial's precrush; e.g. normal_pre50), sample dense or loose (in.prepare with friction 0.5), p0 the cell pressure in MPa,
 # path sigma3 (constant cell pressure, default) or p (constant p'), seed (the sample's and the
 # strengths', default the decks' 15485863). Default: the cases of doc/critical_state.md: rotation0 at
 # p0 = 0.1 0.5 2 5 10 20 50 MPa, normal at the same, rolling at 2 10 50 MPa, each dense and loose,
@@ -32,7 +34,12 @@ run_case() {
   local spec=$1 variant sample p0 path seed wall cpu
   IFS=: read -r variant sample p0 path seed <<< "$spec"
   path=${path:-sigma3}
-  local vars=(-var crushing 1 -var cell "$(awk -v p="$p0" 'BEGIN {printf "%.6g", p * 1e6}')" -var axial_max "$axial_max"
+  local crushing=1 pre=""
+  case $variant in
+    *_pre*) pre=${variant##*_pre}; variant=${variant%_pre*} ;;
+  esac
+  [ "$variant" = none ] && crushing=0
+  local vars=(-var crushing $crushing -var cell "$(awk -v p="$p0" 'BEGIN {printf "%.6g", p * 1e6}')" -var axial_max "$axial_max"
               -var path "$path" -var sample "$sample" -var checkpoint_every 0)
   case $sample in
     dense) ;;
@@ -43,8 +50,15 @@ run_case() {
     rotation0) ;;
     rolling) vars+=(-var rotation 1 -var rolling epsd2 -var mu_r 0.7) ;;
     normal) vars+=(-var distribution normal) ;;
-    *) echo "unknown variant $variant (rotation0, rolling, normal)" >&2; return 2 ;;
+    none) ;;
+    *) echo "unknown variant $variant (rotation0, rolling, normal, none; each with _pre<P>)" >&2; return 2 ;;
   esac
+  if [ -n "$pre" ]; then
+    awk -v p="$pre" -v c="$p0" 'BEGIN {exit !(p + 0 > c + 0)}' \
+      || { echo "variant _pre$pre: the pre-crushing stress (MPa) must exceed p0 = $p0" >&2; return 2; }
+    vars+=(-var precrush "$(awk -v p="$pre" 'BEGIN {printf "%.6g", p * 1e6}')")
+    variant=${variant}_pre$pre
+  fi
   local dir=$out/$variant/${sample}_${p0}MPa
   [ "$path" = sigma3 ] || dir=${dir}_$path
   if [ -n "${seed:-}" ]; then vars+=(-var seed "$seed"); dir=${dir}_s$seed; fi

@@ -236,6 +236,44 @@ def case_resume_triaxial_compression(liggghts, work):
           "shearing)" % (stages.count("0"), stages.count("1")))
 
 
+@variants(timeout=600)
+def case_resume_triaxial_precrush(liggghts, work):
+    """in.triaxial with a pre-crushed sample (precrush 2 MPa, cell 0.5 MPa): compressed to 2 MPa
+    (stage 0), unloaded by halving stresses, 1 MPa held 4000 steps, then 0.5 MPa held 8000 (stage 2),
+    then sheared (stage 1). The stages come in that order, each unloading level's last row holds its
+    stress within 3% (the servo overshoots each halving, then settles), and a run killed
+    during the unloading and resumed gives the uninterrupted run's history, events and gradings to
+    the last digit."""
+    sample = prepare(liggghts, work)
+    variables = {"reuse": 1, "crushing": 1, "precrush": 2e6, "cell": 5e5, "settle": 8000, "unload_steps": 4000,
+                 "axial_max": 0.002, "checkpoint_every": 1000, "vtk": 0}
+    outputs = ("history_Tdense2.csv", "events_Tdense2.csv", "gsd_Tdense2_2MPa.csv", "gsd_Tdense2_0.5MPa_unloaded.csv",
+               "gsd_Tdense2_sheared.csv")
+    reference = copy_sample(sample, os.path.join(work, "uninterrupted"))
+    run(liggghts, reference, 1, variables, deck="in.triaxial")
+    header, rows = read_rows(os.path.join(reference, outputs[0]))
+    col = dict((name, k) for k, name in enumerate(header.split(",")))
+    table = [[float(x) for x in row.split(",")] for row in rows]
+    stages = [int(r[col["stage"]]) for r in table]
+    order = [s for k, s in enumerate(stages) if k == 0 or s != stages[k - 1]]
+    check(order == [0, 2, 1], "stages in the order 0, 2, 1 (%s)" % order)
+    unloading = [r for r in table if r[col["stage"]] == 2]
+    # rows every 1000 steps: the first level's four rows come first, the cell's eight last
+    held = [unloading[3][col["p"]], unloading[-1][col["p"]]]
+    check(len(unloading) == 12, "12 rows of unloading (%d)" % len(unloading))
+    check(abs(held[0] / 1e6 - 1) < 0.03 and abs(held[1] / 5e5 - 1) < 0.03,
+          "the unloading holds 1 MPa, then 0.5 MPa (p %.4g, %.4g Pa)" % tuple(held))
+    folder = copy_sample(sample, os.path.join(work, "killed"))
+    newest = kill_after(liggghts, folder, 1, variables, int(unloading[2][0]), 0.01, deck="in.triaxial", base="ckpt_Tdense2")
+    check(newest is not None and marker_variable(folder, "ckpt_Tdense2", "stage") == 2,
+          "killed after a checkpoint of the unloading (step %s)" % newest)
+    out = run(liggghts, folder, 1, dict(variables, resume=1), deck="in.triaxial")
+    check("CHECKPOINT resumed from" in out, "resumed from a checkpoint")
+    for name in outputs:
+        a, b = open(os.path.join(reference, name)).read(), open(os.path.join(folder, name)).read()
+        check(a == b and a.count("\n") > 3, "%s identical to the uninterrupted run's (%d lines)" % (name, a.count("\n")))
+
+
 @variants(*each_rank_count(2), timeout=600)
 def case_resume_mpi(liggghts, work, ranks):
     """On 2 ranks, killed in the middle of a stretch and resumed: the books hold at every history row

@@ -183,6 +183,29 @@ def write_fixture(folder, cell_mpa, ig0, e_shift=0.0):
         f.write("11.0\n")
 
 
+def case_fit_precrushed(liggghts, work):
+    """post/critical_state.py groups a variant with its pre-crushed samples (variant_pre<P>): dense
+    samples of normal at 2 and 8 MPa (I_G 0.78 + 0.01 ln p') and of normal_pre50 at the same p' with
+    I_G 0.90 + 0.01 ln p', all on the known plane: the group "normal + pre-crushed" (4 tests) recovers
+    beta, which normal's own 2 tests (one grading per p') cannot give."""
+    del liggghts
+    study = os.path.join(work, "study")
+    if os.path.isdir(study):
+        shutil.rmtree(study)
+    for variant, ig0 in (("normal", 0.78), ("normal_pre50", 0.90)):
+        for p in (2.0, 8.0):
+            write_fixture(os.path.join(study, variant, "dense_%gMPa" % p), p, ig0)
+    out = subprocess.run(["/usr/bin/python3", FIT, "--out", os.path.join(work, "fit"), "--no-figures", study],
+                         stdout=subprocess.PIPE, stderr=subprocess.STDOUT, universal_newlines=True)
+    check(out.returncode == 0, "post/critical_state.py ran:\n" + out.stdout[-2000:])
+    fit = open(os.path.join(work, "fit", "fit.md")).read()
+    plane = re.search(r"^\| normal \+ pre-crushed \| 4 \| (\S+) \| (\S+) \| (\S+) \|", fit, re.M)
+    check(plane is not None and abs(float(plane.group(3)) - BETA) < 1e-3 and abs(float(plane.group(2)) - LAMBDA) < 1e-4,
+          "the pre-crushed family's plane: lambda %s, beta %s (built with %g, %g)"
+          % (plane and plane.group(2), plane and plane.group(3), LAMBDA, BETA))
+    check(re.search(r"^\| normal \| 2 \|", fit, re.M) is None, "no plane from normal's own two tests")
+
+
 def case_fit_fixture(liggghts, work):
     """post/critical_state.py on histories built on a known plane e_cs = 1.5 - 0.06 ln(p'/kPa) -
     0.8 I_G at q/p = 1.2: it recovers the plane exactly, phi_cs = 30 degrees, each sample's line
