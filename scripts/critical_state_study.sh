@@ -7,7 +7,9 @@
 # A case is variant:sample:p0[:path[:seed]]: variant rotation0 (grains do not rotate, the decks'
 # default), rolling (free rotation against LIGGGHTS' rolling resistance epsd2, mu_r 0.7,
 # doc/results.md), normal (as rotation0, with the strength draw 'normal' of fix crush: no grain of
-# zero strength, doc/results.md) or none (as rotation0, no grain breaks: the uncrushable control), each
+# zero strength, doc/results.md), weak (as normal, sigma_lim0 = 1 GPa: the reading whose O-2 yield
+# stress nears the decks', doc/results.md "The strength reading side by side") or none (as rotation0,
+# no grain breaks: the uncrushable control), each
 # with an optional suffix _pre<P> (the sample pre-crushed: compressed isotropically to P MPa, unloaded
 # to p0 and sheared there, in.triaxial's precrush; e.g. normal_pre50), sample dense or loose (in.prepare with friction 0.5), p0 the cell pressure in MPa,
 # path sigma3 (constant cell pressure, default) or p (constant p'), seed (the sample's and the
@@ -50,8 +52,9 @@ run_case() {
     rotation0) ;;
     rolling) vars+=(-var rotation 1 -var rolling epsd2 -var mu_r 0.7) ;;
     normal) vars+=(-var distribution normal) ;;
+    weak) vars+=(-var distribution normal -var sigma_lim0 1e9) ;;
     none) ;;
-    *) echo "unknown variant $variant (rotation0, rolling, normal, none; each with _pre<P>)" >&2; return 2 ;;
+    *) echo "unknown variant $variant (rotation0, rolling, normal, weak, none; each with _pre<P>)" >&2; return 2 ;;
   esac
   if [ -n "$pre" ]; then
     awk -v p="$pre" -v c="$p0" 'BEGIN {exit !(p + 0 > c + 0)}' \
