@@ -210,6 +210,21 @@ def case_resume_triaxial(liggghts, work):
     check(a == b and a.count("\n") > 3, "%s identical to the uninterrupted run's (%d lines)" % (history, a.count("\n")))
 
 
+def kill_and_resume_triaxial(liggghts, sample, work, reference, variables, when, stage, what, outputs):
+    """in.triaxial on a copy of the sample, killed `when` = (step, delay) after a checkpoint of
+    `stage` and resumed: the outputs identical to the uninterrupted run's in `reference`."""
+    folder = copy_sample(sample, os.path.join(work, "killed"))
+    newest = kill_after(liggghts, folder, 1, variables, when[0], when[1], deck="in.triaxial", base="ckpt_Tdense2")
+    check(newest is not None and marker_variable(folder, "ckpt_Tdense2", "stage") == stage,
+          "killed after a checkpoint of %s (step %s)" % (what, newest))
+    out = run(liggghts, folder, 1, dict(variables, resume=1), deck="in.triaxial")
+    check("CHECKPOINT resumed from" in out, "resumed from a checkpoint")
+    for name in outputs:
+        a, b = open(os.path.join(reference, name)).read(), open(os.path.join(folder, name)).read()
+        check(a == b and a.count("\n") > 3, "%s identical to the uninterrupted run's (%d lines)" % (name, a.count("\n")))
+    return folder
+
+
 @variants(timeout=600)
 def case_resume_triaxial_compression(liggghts, work):
     """in.triaxial with crushing, killed during its isotropic compression (stage 0) and resumed: the
@@ -221,15 +236,8 @@ def case_resume_triaxial_compression(liggghts, work):
     outputs = ("history_Tdense2.csv", "events_Tdense2.csv", "gsd_Tdense2_1MPa.csv", "gsd_Tdense2_sheared.csv")
     reference = copy_sample(sample, os.path.join(work, "uninterrupted"))
     run(liggghts, reference, 1, variables, deck="in.triaxial")
-    folder = copy_sample(sample, os.path.join(work, "killed"))
-    newest = kill_after(liggghts, folder, 1, variables, 0, 0.05, deck="in.triaxial", base="ckpt_Tdense2")
-    check(newest is not None and marker_variable(folder, "ckpt_Tdense2", "stage") == 0,
-          "killed after a checkpoint of the isotropic compression (step %s)" % newest)
-    out = run(liggghts, folder, 1, dict(variables, resume=1), deck="in.triaxial")
-    check("CHECKPOINT resumed from" in out, "resumed from a checkpoint")
-    for name in outputs:
-        a, b = open(os.path.join(reference, name)).read(), open(os.path.join(folder, name)).read()
-        check(a == b and a.count("\n") > 3, "%s identical to the uninterrupted run's (%d lines)" % (name, a.count("\n")))
+    folder = kill_and_resume_triaxial(liggghts, sample, work, reference, variables, (0, 0.05), 0,
+                                      "the isotropic compression", outputs)
     rows = open(os.path.join(folder, outputs[0])).read().splitlines()
     stages = [row.rsplit(",", 1)[1] for row in rows[1:]]
     check("0" in stages and "1" in stages, "the history holds both stages (%d rows of compression, %d of "
@@ -263,15 +271,8 @@ def case_resume_triaxial_precrush(liggghts, work):
     check(len(unloading) == 12, "12 rows of unloading (%d)" % len(unloading))
     check(abs(held[0] / 1e6 - 1) < 0.03 and abs(held[1] / 5e5 - 1) < 0.03,
           "the unloading holds 1 MPa, then 0.5 MPa (p %.4g, %.4g Pa)" % tuple(held))
-    folder = copy_sample(sample, os.path.join(work, "killed"))
-    newest = kill_after(liggghts, folder, 1, variables, int(unloading[2][0]), 0.01, deck="in.triaxial", base="ckpt_Tdense2")
-    check(newest is not None and marker_variable(folder, "ckpt_Tdense2", "stage") == 2,
-          "killed after a checkpoint of the unloading (step %s)" % newest)
-    out = run(liggghts, folder, 1, dict(variables, resume=1), deck="in.triaxial")
-    check("CHECKPOINT resumed from" in out, "resumed from a checkpoint")
-    for name in outputs:
-        a, b = open(os.path.join(reference, name)).read(), open(os.path.join(folder, name)).read()
-        check(a == b and a.count("\n") > 3, "%s identical to the uninterrupted run's (%d lines)" % (name, a.count("\n")))
+    kill_and_resume_triaxial(liggghts, sample, work, reference, variables, (int(unloading[2][0]), 0.01), 2,
+                             "the unloading", outputs)
 
 
 @variants(*each_rank_count(2), timeout=600)
