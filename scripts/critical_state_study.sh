@@ -32,6 +32,8 @@ jobs=${JOBS:-2}
 axial_max=${AXIAL_MAX:-0.3}
 source "$here/scripts/mpi_env.sh"
 
+pascals() { awk -v p="$1" 'BEGIN {printf "%.6g", p * 1e6}'; }   # MPa -> Pa, as in.triaxial takes it
+
 run_case() {
   local spec=$1 variant sample p0 path seed wall cpu
   IFS=: read -r variant sample p0 path seed <<< "$spec"
@@ -41,7 +43,7 @@ run_case() {
     *_pre*) pre=${variant##*_pre}; variant=${variant%_pre*} ;;
   esac
   [ "$variant" = none ] && crushing=0
-  local vars=(-var crushing $crushing -var cell "$(awk -v p="$p0" 'BEGIN {printf "%.6g", p * 1e6}')" -var axial_max "$axial_max"
+  local vars=(-var crushing $crushing -var cell "$(pascals "$p0")" -var axial_max "$axial_max"
               -var path "$path" -var sample "$sample" -var checkpoint_every 0)
   case $sample in
     dense) ;;
@@ -59,7 +61,7 @@ run_case() {
   if [ -n "$pre" ]; then
     awk -v p="$pre" -v c="$p0" 'BEGIN {exit !(p + 0 > c + 0)}' \
       || { echo "variant _pre$pre: the pre-crushing stress (MPa) must exceed p0 = $p0" >&2; return 2; }
-    vars+=(-var precrush "$(awk -v p="$pre" 'BEGIN {printf "%.6g", p * 1e6}')")
+    vars+=(-var precrush "$(pascals "$pre")")
     variant=${variant}_pre$pre
   fi
   local dir=$out/$variant/${sample}_${p0}MPa
