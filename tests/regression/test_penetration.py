@@ -860,6 +860,8 @@ def case_depth_bins(liggghts, work):
             f.write("step,depth_Dc,q_c\n" + "".join("%d,%g,%g\n" % (k, d, q * 1e6) for k, (d, q) in enumerate(rows)))
         paths.append(path)
     table = os.path.join(work, "depth.csv")
+    if os.path.exists(table):  # --csv appends: a rerun in the same folder starts a new table
+        os.remove(table)
     out = subprocess.run(["/usr/bin/python3", os.path.join(ROOT, "post", "penetration_depth.py")] + paths + ["--to", "2", "--csv", table],
                          stdout=subprocess.PIPE, universal_newlines=True, check=True).stdout.splitlines()
     check(out == ["0 - 1 D_c: 2 tests, q_c 1.500 +- 0.500 MPa", "1 - 2 D_c: 2 tests, q_c 4.000 +- 1.000 MPa"],
