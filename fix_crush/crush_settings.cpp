@@ -23,7 +23,7 @@ CrushSettings parse_crush_settings(const std::vector<std::string> &args)
 {
   CrushSettings c;
   long seed = 0, every = 1;
-  int orientation = 0, force = 0, fragment_density = 0, distribution = static_cast<int>(c.distribution), layout = static_cast<int>(c.layout);
+  int orientation = 0, force = 0, fragment_density = 0, event_lists = 0, distribution = static_cast<int>(c.distribution), layout = static_cast<int>(c.layout);
   KeywordTable t;
   // Ranges: what has a physical meaning (doc/fix_crush.txt); suspicious_settings() warns inside them.
   t.number("sigma_lim0", "a strength in [1e3, 1e30] Pa", in_range(1e3, 1e30, true), c.sigma_lim0, true)
@@ -56,8 +56,11 @@ CrushSettings parse_crush_settings(const std::vector<std::string> &args)
    .yes_no("check_tags", c.check_tags)
    .choice("force", {"elastic", "total"}, force)
    .choice("fragment_density", {"true", "scaled"}, fragment_density)  // the order of FragmentDensity
-   .yes_no("redraw", c.redraw);
+   .yes_no("redraw", c.redraw)
+   .choice("event_lists", {"insert", "rebuild"}, event_lists)
+   .yes_no("check_lists", c.check_lists);
   t.parse(args);
+  c.insert_lists = event_lists == 0;
   c.total_force = force == 1;
   c.fragment_density = static_cast<FragmentDensity>(fragment_density);
   c.seed = static_cast<std::uint64_t>(seed);

@@ -3,7 +3,8 @@
    fix ID group crush sigma_lim0 5e9 cv 1 weibull_m 10 d0 2e-3 seed 1234567 &
        scale 2 dmin 5e-5 every 1 orientation random distribution normal size_effect yes &
        layout fourteen fines_dimension 2.5 rayleigh_fraction 0.3 log crush_events.csv check_tags no &
-       region tip force elastic fragment_density true redraw no scale_atom scale_factor
+       region tip force elastic fragment_density true redraw no scale_atom scale_factor &
+       event_lists insert check_lists no
 
    Required: sigma_lim0 (Pa), cv, weibull_m, d0 (m), seed. Every error names the keyword and the
    expected value (ModelError), for the LIGGGHTS adapter to pass to error->all(). */
@@ -43,6 +44,8 @@ struct CrushSettings {
   bool total_force = false;      // 'force total': the normal force with damping and cohesion, not k_n U
   FragmentDensity fragment_density = FragmentDensity::true_density;  // 'scaled': the grain's time step
   bool redraw = false;           // 'redraw yes': the strengths a restart file brings are drawn anew
+  bool insert_lists = true;      // 'event_lists insert': fragments of interior grains join the lists without a rebuild
+  bool check_lists = false;      // after each such insertion, until the next build: every touching pair listed (tests)
 
   // sigma_lim (Pa) of a particle of diameter d (m) with strength draw s (Pa): eq. 10 or s, with the
   // deck's N or the particle's own scale factor (scale_atom).

@@ -14,6 +14,7 @@
 #include "atom.h"
 #include "atom_vec.h"
 #include "comm.h"
+#include "fix_crush_list_insertion.h"
 #include "crush_breakage_limit.h"
 #include "crush_check_bound.h"
 #include "crush_constants.h"
@@ -45,7 +46,7 @@ namespace {
 
 enum Output { EVENTS = 0, REMOVED_VOLUME = 1, LARGEST_RATIO = 2, REPLACE_SECONDS = 3, CHECKED_STEPS = 4,
               OUTFLOW_VOLUME = 5, OUTFLOW_PARTICLES = 6, TRUE_MASS = 7, LARGEST_DENSITY_SCALE = 8,
-              NOUTPUT = 9 };  // vector
+              INSERTED_STEPS = 9, NOUTPUT = 10 };  // vector
 
 crush::CrushSettings parse(Fix *fix, Error *error, int me, int narg, char **arg)
 {
@@ -80,13 +81,13 @@ FixCrush::FixCrush(LAMMPS *lmp, int narg, char **arg) :
   settings_(parse(this, error, comm->me, narg, arg)),
   strength_(settings_.distribution, settings_.sigma_lim0, settings_.cv, settings_.weibull_m, settings_.seed),
   nfrag_(static_cast<int>(crush::fragment_layout(settings_.layout, 1.0).size())),
-  region_(NULL), fix_data_(NULL), data_id_(NULL), fix_true_density_(NULL), true_density_id_(NULL), fix_scale_(NULL), limit_factor_(NULL), irregular_(NULL), log_(NULL),
+  region_(NULL), fix_data_(NULL), data_id_(NULL), fix_true_density_(NULL), true_density_id_(NULL), fix_scale_(NULL), limit_factor_(NULL), irregular_(NULL), list_insertion_(NULL), inserting_(false), inserted_steps_(0), log_(NULL),
   events_total_(0), removed_volume_(0.0), outflow_volume_(0.0), outflow_particles_(0), outflow_reported_(false),
   max_ratio_(0.0), local_max_ratio_(0.0), max_ratio_step_(-1),
   smallest_fragment_size_(0.0), initial_largest_size_(0.0), next_tag_(1), replace_seconds_(0.0),
   particle_count_(0), initialized_(false), refresh_needed_(true), recording_(true), box_reference_{0.0, 0.0, 0.0},
   allowed_displacement_(0.0), force_check_(true), check_now_(true), checked_steps_(0), restart_step_(-1),
-  log_opened_(false), multi_advised_(false), redraw_pending_(settings_.redraw)
+  log_opened_(false), multi_advised_(false), lists_advised_(false), redraw_pending_(settings_.redraw)
 {
   if (!atom->radius_flag || !atom->rmass_flag || !atom->density_flag)
     error->all(FLERR, "fix crush needs 'atom_style granular' (radius, mass and density per atom)");
@@ -108,6 +109,7 @@ FixCrush::FixCrush(LAMMPS *lmp, int narg, char **arg) :
   next_reneighbor = -1;
 
   irregular_ = new Irregular(lmp);
+  list_insertion_ = new CrushListInsertion(lmp);
   memory->create(limit_factor_, atom->ntypes + 1, atom->ntypes + 1, "crush:limit_factor");
   recorder_.limit_factor = limit_factor_;
   recorder_.total_force = settings_.total_force;
@@ -155,6 +157,8 @@ FixCrush::~FixCrush()
   ContactLoadMonitor::attach(lmp, NULL);
   if (log_) fclose(log_);
   delete irregular_;
+  delete list_insertion_;
+  if (neighbor->insertion_handler == this) neighbor->insertion_handler = NULL;
   memory->destroy(limit_factor_);
   if (data_id_ && modify->find_fix(data_id_) >= 0) modify->delete_fix(data_id_);
   delete[] data_id_;
@@ -413,7 +417,7 @@ void FixCrush::pre_force(int)
   if (!initialized_)
     error->all(FLERR, "fix crush was defined after the last full run setup ('run ... pre no'): run once "
                       "with 'pre yes' (or 'run 0') after defining it");
-  const bool renumbered = refresh_needed_ || neighbor->ago == 0;
+  const bool renumbered = refresh_needed_ || neighbor->atoms_added(update->ntimestep);
   if (renumbered) {
     refresh_recorder();
     fill_true_densities();
@@ -466,7 +470,28 @@ void FixCrush::setup(int)
   draw_missing_strengths();
   refresh_needed_ = true;
   force_check_ = true;
+  choose_event_lists();
   if (!found_.empty()) neighbor->request_rebuild();  // events found at the last run's last step
+}
+
+// 'event_lists insert': this run's lists exist now (the neighbor's init follows the fixes'). Where
+// a list or fix cannot take fragments between builds, every event step rebuilds, said once.
+void FixCrush::choose_event_lists()
+{
+  std::string reason = settings_.insert_lists ? list_insertion_->unsupported_reason() : "event_lists rebuild";
+  inserting_ = reason.empty();
+  if (inserting_) {
+    if (neighbor->insertion_handler && neighbor->insertion_handler != this)
+      error->all(FLERR, "fix crush: another fix adds particles to the neighbour lists between builds");
+    neighbor->insertion_handler = this;
+  } else if (neighbor->insertion_handler == this) {
+    neighbor->insertion_handler = NULL;
+  }
+  if (!inserting_ && settings_.insert_lists && comm->me == 0 && !lists_advised_) {
+    const std::string msg = "fix crush: event steps rebuild the neighbour lists (" + reason + ")";
+    error->message(FLERR, msg.c_str());
+    lists_advised_ = true;
+  }
 }
 
 void FixCrush::end_of_step()
@@ -492,9 +517,18 @@ void FixCrush::end_of_step()
   // No reduction here: a processor whose grains broke asks for the next step's rebuild, and the
   // request rides on the neighbour list's distance check (Neighbor::request_rebuild). The events
   // are agreed at that rebuild's pre_exchange, where every processor meets.
+  if (settings_.check_lists && neighbor->last_insertion > neighbor->lastcall) list_insertion_->verify();
   if (mothers.empty()) return;
   record_events(mothers);
-  neighbor->request_rebuild();
+  request_replacement(mothers);
+}
+
+// Grains away from every boundary are replaced at the next step without a rebuild, if every
+// processor's are (Neighbor::decide); any other event asks for the rebuild.
+void FixCrush::request_replacement(const std::vector<int> &mothers)
+{
+  if (inserting_ && list_insertion_->can_take(mothers)) neighbor->request_insertion();
+  else neighbor->request_rebuild();
 }
 
 // This processor's mothers, as the events all processors will agree on (agree_on_events).
@@ -506,34 +540,38 @@ void FixCrush::record_events(const std::vector<int> &mothers)
                       {atom->x[i][0], atom->x[i][1], atom->x[i][2]}});
 }
 
-// Collective, at every rebuild (and before a restart is written): one gather tells each
-// processor's events and particles. Crushing only adds particles, and the particles that left
-// the box are counted as they leave (count_outflow): during a run, fewer than that means particles
-// vanished by other means, and the volume books would no longer balance. Then every processor
-// gets every event, sorted by tag: the order that numbers the fragments.
-void FixCrush::agree_on_events(bool count_particles)
+// Collective, at every rebuild and insertion (and before a restart is written): one gather tells
+// each processor's events and particles, and whether its events can be replaced in place. Crushing
+// only adds particles, and the particles that left the box are counted as they leave
+// (count_outflow): during a run, fewer than that means particles vanished by other means, and the
+// volume books would no longer balance. Then every processor gets every event, sorted by tag: the
+// order that numbers the fragments. Returns whether every processor's can be replaced in place.
+bool FixCrush::agree_on_events(bool count_particles, bool replaceable_here)
 {
   const int nprocs = comm->nprocs, size = static_cast<int>(sizeof(Event));
-  const int mine[2] = {static_cast<int>(found_.size()) * size, atom->nlocal};
-  std::vector<int> all(2 * nprocs);
-  MPI_Allgather(mine, 2, MPI_INT, all.data(), 2, MPI_INT, world);
+  const int mine[3] = {static_cast<int>(found_.size()) * size, atom->nlocal, replaceable_here ? 1 : 0};
+  std::vector<int> all(3 * nprocs);
+  MPI_Allgather(mine, 3, MPI_INT, all.data(), 3, MPI_INT, world);
   std::vector<int> counts(nprocs), displs(nprocs);
   int total = 0;
   bigint particles = 0;
+  bool replaceable = true;
   for (int p = 0; p < nprocs; p++) {
-    counts[p] = all[2 * p];
+    counts[p] = all[3 * p];
     displs[p] = total;
     total += counts[p];
-    particles += all[2 * p + 1];
+    particles += all[3 * p + 1];
+    replaceable = replaceable && all[3 * p + 2] == 1;
   }
   if (count_particles) check_particle_count(particles);
-  if (total == 0) return;
+  if (total == 0) return replaceable;
   // Events are plain structs, identical in layout on every processor: gathered as bytes.
   std::vector<Event> events(total / size);
   MPI_Allgatherv(found_.data(), mine[0], MPI_BYTE, events.data(), counts.data(), displs.data(), MPI_BYTE, world);
   found_.clear();
   pending_.insert(pending_.end(), events.begin(), events.end());
   std::sort(pending_.begin(), pending_.end(), [](const Event &a, const Event &b) { return a.tag < b.tag; });
+  return replaceable;
 }
 
 void FixCrush::check_particle_count(bigint particles)
@@ -548,6 +586,31 @@ void FixCrush::check_particle_count(bigint particles)
   particle_count_ = particles;
 }
 
+// Neighbor::decide() at the step after the events, when every processor asked for an insertion:
+// the mothers' spheres must lie inside their sub-domains (no fragment to migrate). Otherwise the
+// agreed events wait for the rebuild this returns false for (pre_exchange).
+bool FixCrush::insert_without_rebuild()
+{
+  if (!agree_on_events(true, list_insertion_->inside_subdomain(found_here()))) return false;
+  if (!pending_.empty()) {
+    const double start = MPI_Wtime();
+    replace_mothers(true);
+    replace_seconds_ += MPI_Wtime() - start;
+    pending_.clear();
+    inserted_steps_++;
+  }
+  if (settings_.check_lists) list_insertion_->verify();
+  return true;
+}
+
+// The local indices of this processor's events not yet agreed.
+std::vector<int> FixCrush::found_here() const
+{
+  std::vector<int> mothers;
+  for (const Event &e : found_) mothers.push_back(atom->map(e.tag));
+  return mothers;
+}
+
 // The agreed events are replaced before the exchange moves their fragments (fix_crush_replacement.cpp);
 // then the particles that the exchange will drop beyond a fixed boundary leave the books
 // (fix_crush_outflow.cpp).
@@ -556,7 +619,7 @@ void FixCrush::pre_exchange()
   agree_on_events(true);
   if (!pending_.empty()) {
     const double start = MPI_Wtime();
-    replace_mothers();
+    replace_mothers(false);
     replace_seconds_ += MPI_Wtime() - start;
     pending_.clear();
     next_reneighbor = -1;
@@ -694,6 +757,7 @@ double FixCrush::compute_vector(int n)
   if (n == OUTFLOW_PARTICLES) return static_cast<double>(outflow_particles_);
   if (n == TRUE_MASS) return true_mass();
   if (n == LARGEST_DENSITY_SCALE) return largest_density_scale();
+  if (n == INSERTED_STEPS) return static_cast<double>(inserted_steps_);
   return replace_seconds_;
 }
 

@@ -35,10 +35,11 @@ FixStyle(crush,FixCrush)
 #include "fix.h"
 #include "lmptype.h"
 #include "contact_load_monitor.h"
+#include "neighbor.h"
 
 namespace LAMMPS_NS {
 
-class FixCrush : public Fix {
+class FixCrush : public Fix, public NeighborInsertion {
  public:
   FixCrush(class LAMMPS *, int, char **);
   ~FixCrush();
@@ -54,6 +55,8 @@ class FixCrush : public Fix {
   double compute_vector(int);
   void write_restart(FILE *);
   void restart(char *);
+  // 'event_lists insert': the events replaced without a rebuild (fix_crush_list_insertion.h), collective
+  bool insert_without_rebuild();
 
   enum Column { STRENGTH = 0, GENERATION = 1, RATIO = 2 };  // per-atom array (f_crush[i][1..3])
 
@@ -99,7 +102,10 @@ class FixCrush : public Fix {
   double smallest_possible_radius() const;
   double smallest_radius() const;
   void record_events(const std::vector<int> &mothers);
-  void agree_on_events(bool count_particles);
+  bool agree_on_events(bool count_particles, bool replaceable_here = true);
+  void choose_event_lists();
+  void request_replacement(const std::vector<int> &mothers);
+  std::vector<int> found_here() const;
   void check_particle_count(bigint particles);
   void log_events(const std::vector<Event> &events, tagint first_new_tag);
   void open_log();
@@ -111,7 +117,10 @@ class FixCrush : public Fix {
   void report_outflow(bigint count, double volume);
   void particle_error(tagint tag, double radius, double density, const char *doing,
                       const crush::ModelError &e) const;
-  void replace_mothers();
+  void replace_mothers(bool in_place);
+  double replace_one(const std::pair<std::size_t, int> &event, tagint first, double &smallest);
+  void replace_in_place(const std::vector<std::pair<std::size_t, int>> &owned, tagint first, double &removed,
+                        double &smallest);
   std::vector<std::pair<std::size_t, int>> owned_mothers() const;
   void check_books(double added, double replaced) const;
   void check_unique_tags() const;
@@ -174,6 +183,9 @@ class FixCrush : public Fix {
   bool check_now_;                         // this step is checked
   bigint checked_steps_;
   class Irregular *irregular_;
+  class CrushListInsertion *list_insertion_;  // 'event_lists insert': fragments into the lists in place
+  bool inserting_;                   // this run's lists and fixes take fragments without a rebuild
+  bigint inserted_steps_;            // event steps replaced without a rebuild (f_ID[10])
   FILE *log_;
 
   std::vector<Event> found_;         // this processor's, found at end_of_step, agreed at the next rebuild
@@ -196,7 +208,8 @@ class FixCrush : public Fix {
   bool recording_;                   // the recorder is attached (with 'every' > 1: on check steps only)
   bigint restart_step_;              // the step of the restart file this run continues (-1: none)
   bool log_opened_;                  // open_log() ran (at the first init)
-  bool multi_advised_;               // advise_neighbor_multi() has spoken
+  bool multi_advised_;
+  bool lists_advised_;               // choose_event_lists() has said why event steps rebuild               // advise_neighbor_multi() has spoken
   bool redraw_pending_;              // 'redraw yes': the first setup discards the restart's strengths
 };
 

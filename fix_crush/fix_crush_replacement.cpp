@@ -26,6 +26,7 @@
 #include "crush_constants.h"
 #include "crush_fragment_density.h"
 #include "crush_fragments.h"
+#include "fix_crush_list_insertion.h"
 #include "crush_model_error.h"
 #include "domain.h"
 #include "error.h"
@@ -133,7 +134,10 @@ void FixCrush::body_error(tagint tag, const char *body) const
   error->one(FLERR, msg);
 }
 
-void FixCrush::replace_mothers()
+// in_place: the mothers lie away from every boundary, and the fragments join the lists without a
+// rebuild (fix_crush_list_insertion.h); otherwise the rebuild that follows builds the lists, after the
+// fragments migrated.
+void FixCrush::replace_mothers(bool in_place)
 {
   // New tags follow every tag in use (and every tag ever given), in the agreed event order.
   const tagint first = std::max(largest_tag() + 1, next_tag_);
@@ -143,18 +147,17 @@ void FixCrush::replace_mothers()
 
   const std::vector<std::pair<std::size_t, int>> owned = owned_mothers();
   const int nlocal_before = atom->nlocal;
-  std::vector<int> mothers;
   double removed_local = 0.0, smallest = 0.0;
-  for (const auto &event : owned) {
-    const std::size_t k = event.first;
-    const int i = event.second;
-    mothers.push_back(i);
-    // the smallest fragment's sand size, d / N with the mother's N (read before she is replaced)
-    const double d = crush::smallest_fragment_ratio(settings_.layout) * pending_[k].diameter / scale_of(i);
-    smallest = smallest == 0.0 ? d : std::min(smallest, d);
-    removed_local += create_fragments(i, first + nfrag_ * static_cast<tagint>(k), pending_[k].generation + 1);
+  if (in_place) {
+    replace_in_place(owned, first, removed_local, smallest);
+  } else {
+    std::vector<int> mothers;
+    for (const auto &event : owned) {
+      mothers.push_back(event.second);
+      removed_local += replace_one(event, first, smallest);
+    }
+    delete_mothers(mothers);
   }
-  delete_mothers(mothers);
 
   // Books: the volume that left the particles is the removed volume, nothing else; and every
   // event replaced exactly once, counted on all processors (one reduction per event step).
@@ -173,16 +176,49 @@ void FixCrush::replace_mothers()
   next_tag_ = first + nfrag_ * static_cast<tagint>(pending_.size());
   atom->natoms += static_cast<bigint>(nfrag_ - 1) * static_cast<bigint>(pending_.size());
 
-  atom->nghost = 0;
-  atom->map_init();
-  atom->map_set();
-  // Fragments may lie outside this sub-domain or the periodic box: remap and migrate them.
-  domain->pbc();
-  domain->reset_box();
-  if (irregular_->migrate_check()) irregular_->migrate_atoms();
+  if (in_place) {
+    refresh_needed_ = true;  // new local atoms: this step's per-atom work is redone (pre_force)
+  } else {
+    atom->nghost = 0;
+    atom->map_init();
+    atom->map_set();
+    // Fragments may lie outside this sub-domain or the periodic box: remap and migrate them.
+    domain->pbc();
+    domain->reset_box();
+    if (irregular_->migrate_check()) irregular_->migrate_atoms();
+  }
   if (settings_.check_tags) check_unique_tags();
 
   if (settings_.dmin <= 0.0) check_time_step(smallest_radius());
+}
+
+// One event's fragments appended; returns the volume they leave out, and lowers 'smallest' to the
+// smallest fragment's sand size, d / N with the mother's N (read before she is replaced).
+double FixCrush::replace_one(const std::pair<std::size_t, int> &event, tagint first, double &smallest)
+{
+  const std::size_t k = event.first;
+  const int i = event.second;
+  const double d = crush::smallest_fragment_ratio(settings_.layout) * pending_[k].diameter / scale_of(i);
+  smallest = smallest == 0.0 ? d : std::min(smallest, d);
+  return create_fragments(i, first + nfrag_ * static_cast<tagint>(k), pending_[k].generation + 1);
+}
+
+// Each mother's fragments appended over the slots the ghosts left, the last moved into her slot at
+// once, so that no other index moves; then the lists learn the new slots.
+void FixCrush::replace_in_place(const std::vector<std::pair<std::size_t, int>> &owned, tagint first,
+                                double &removed, double &smallest)
+{
+  std::vector<int> mothers;
+  for (const auto &event : owned) mothers.push_back(event.second);
+  list_insertion_->open(mothers, nfrag_);
+  for (const auto &event : owned) {
+    const int first_new = atom->nlocal;
+    removed += replace_one(event, first, smallest);
+    atom->avec->copy(atom->nlocal - 1, event.second, 1);
+    atom->nlocal--;
+    list_insertion_->add_family(event.second, first_new, nfrag_ - 1);
+  }
+  list_insertion_->close();
 }
 
 // The agreed events whose mother this processor owns, as (event, local index), all resolved before

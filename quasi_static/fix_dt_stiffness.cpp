@@ -103,7 +103,7 @@ void FixDtStiffness::setup(int)
 // the force pass (the neighbour list is built by then), so that only those passes record.
 void FixDtStiffness::pre_force(int)
 {
-  collect_stiffness(update->ntimestep % every_ == 0 || neighbor->ago == 0 || stiffening_);
+  collect_stiffness(update->ntimestep % every_ == 0 || neighbor->atoms_added(update->ntimestep) || stiffening_);
 }
 
 void FixDtStiffness::end_of_step()
