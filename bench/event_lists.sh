@@ -27,18 +27,17 @@ deck() {  # deck LABEL MODE: the compression from the prepared sample (reuse 1)
   local start
   start=$(date +%s%N)
   (cd "$work/$1" && mpirun -np "$ranks" "$liggghts" -in in.oedometer -var N "$n" -var sigma_max "$sigma_max" \
-     -var reuse 1 -var crush_where "event_lists $2" -log log.liggghts > screen.txt 2>&1) \
+     -var reuse 1 -var crush_where "event_lists $2" -var timing yes -log log.liggghts > screen.txt 2>&1) \
     || { tail -5 "$work/$1/screen.txt"; exit 1; }
   local seconds events
   seconds=$(awk -v a="$start" -v b="$(date +%s%N)" 'BEGIN {printf "%.1f", (b - a) / 1e9}')
   events=$(cut -d, -f1 "$work/$1"/events_O"$n".csv | tail -n +2 | sort -u | wc -l)
-  # loop time, neighbour time (the first number of 'Neigh time (%) = s (p)'), builds, f_crush[10]
+  # loop time and neighbour time (the first number of 'Neigh time (%) = s (p)') of the ramp's
+  # stretches, builds, and the deck's count of event steps replaced without a rebuild (f_crush[10])
   awk -v s="$seconds" -v e="$events" '/^Loop time of/ {loop += $4} /^Neigh time/ {neigh += $5}
-       /^Neighbor list builds/ {builds += $NF}
-       /^Step/ {col = 0; for (k = 1; k <= NF; k++) if ($k ~ /^crush\[10/) col = k; next}
-       col && $1 ~ /^[0-9]+$/ {inserted = $col}
+       /^Neighbor list builds/ {builds += $NF} /^EVENT STEPS WITHOUT A REBUILD/ {inserted = $NF}
        END {printf "%s %.1f %.1f %.1f %d %d %d\n", s, loop, neigh, 100 * neigh / loop, builds, e, inserted}' \
-      "$work/$1/log.liggghts"
+      "$work/$1/screen.txt"
 }
 
 echo "preparing the sample (N = $n) ..."
