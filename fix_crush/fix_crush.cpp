@@ -514,9 +514,10 @@ void FixCrush::end_of_step()
   local_max_ratio_ = local_max;
   max_ratio_step_ = -1;  // reduced over processors when output asks for it, not every step
   if (settings_.adaptive) schedule_next_check();
-  // No reduction here: a processor whose grains broke asks for the next step's rebuild, and the
-  // request rides on the neighbour list's distance check (Neighbor::request_rebuild). The events
-  // are agreed at that rebuild's pre_exchange, where every processor meets.
+  // No reduction here: a processor whose grains broke asks for the next step's rebuild or
+  // insertion, and the request rides on the neighbour list's distance check (request_replacement).
+  // The events are agreed where every processor meets: at that rebuild's pre_exchange, or in
+  // insert_without_rebuild().
   if (settings_.check_lists && neighbor->last_insertion > neighbor->lastcall) list_insertion_->verify();
   if (mothers.empty()) return;
   record_events(mothers);
@@ -593,14 +594,20 @@ bool FixCrush::insert_without_rebuild()
 {
   if (!agree_on_events(true, list_insertion_->inside_subdomain(found_here()))) return false;
   if (!pending_.empty()) {
-    const double start = MPI_Wtime();
-    replace_mothers(true);
-    replace_seconds_ += MPI_Wtime() - start;
-    pending_.clear();
+    replace_pending(true);
     inserted_steps_++;
   }
   if (settings_.check_lists) list_insertion_->verify();
   return true;
+}
+
+// The agreed events replaced (timed for f_ID[4]), then forgotten.
+void FixCrush::replace_pending(bool in_place)
+{
+  const double start = MPI_Wtime();
+  replace_mothers(in_place);
+  replace_seconds_ += MPI_Wtime() - start;
+  pending_.clear();
 }
 
 // The local indices of this processor's events not yet agreed.
@@ -618,10 +625,7 @@ void FixCrush::pre_exchange()
 {
   agree_on_events(true);
   if (!pending_.empty()) {
-    const double start = MPI_Wtime();
-    replace_mothers(false);
-    replace_seconds_ += MPI_Wtime() - start;
-    pending_.clear();
+    replace_pending(false);
     next_reneighbor = -1;
   }
   count_outflow();

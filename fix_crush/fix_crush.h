@@ -8,7 +8,9 @@
    reached their limit, agrees on them across processors (sorted by tag, so fragment tags and
    strengths never depend on the decomposition), logs them, and schedules a reneighboring;
    pre_exchange() of the next step replaces each by its fragments (fix_crush_replacement.cpp: the
-   fragments, what they inherit from their mother, the books), and counts the grains that leave a
+   fragments, what they inherit from their mother, the books), or, for grains away from every
+   boundary, insert_without_rebuild() replaces them in place without one
+   (fix_crush_list_insertion.h), and counts the grains that leave a
    fixed box (fix_crush_outflow.cpp: 'thermo_modify lost'). With 'scale_atom' each particle carries
    its own upscaling factor N (fix_crush_scale.cpp): eq. 10, the comminution limit and the grading
    read it per particle.
@@ -117,6 +119,7 @@ class FixCrush : public Fix, public NeighborInsertion {
   void report_outflow(bigint count, double volume);
   void particle_error(tagint tag, double radius, double density, const char *doing,
                       const crush::ModelError &e) const;
+  void replace_pending(bool in_place);
   void replace_mothers(bool in_place);
   double replace_one(const std::pair<std::size_t, int> &event, tagint first, double &smallest);
   void replace_in_place(const std::vector<std::pair<std::size_t, int>> &owned, tagint first, double &removed,
@@ -208,8 +211,8 @@ class FixCrush : public Fix, public NeighborInsertion {
   bool recording_;                   // the recorder is attached (with 'every' > 1: on check steps only)
   bigint restart_step_;              // the step of the restart file this run continues (-1: none)
   bool log_opened_;                  // open_log() ran (at the first init)
-  bool multi_advised_;
-  bool lists_advised_;               // choose_event_lists() has said why event steps rebuild               // advise_neighbor_multi() has spoken
+  bool multi_advised_;               // advise_neighbor_multi() has spoken
+  bool lists_advised_;               // choose_event_lists() has said why event steps rebuild
   bool redraw_pending_;              // 'redraw yes': the first setup discards the restart's strengths
 };
 

@@ -5,9 +5,7 @@
 #include "fix_crush_list_insertion.h"
 
 #include <algorithm>
-#include <cmath>
 #include <cstdio>
-#include <cstring>
 #include <unordered_set>
 
 #include "atom.h"
