@@ -169,7 +169,7 @@ done
 # pristine_wider (the width study's next steps, 40 and 50 D_c), pristine_base and pristine_deep (at
 # 40 D_c: the rigid base 5 D_c below the final tip, and tests of 8 D_c, each beside the 40 D_c tests),
 # pristine_stress_w40 (pristine_stress's chambers 40 D_c wide: loose at 100 kPa, dense and loose at
-# 400, crushing in the zone, beside the 40 D_c tests), pristine_pile (the closed-ended pile in the
+# 200 and 400, crushing in the zone, beside the 40 D_c tests), pristine_pile (the closed-ended pile in the
 # pristine chamber at 5, crushing in the zone). Seeds 1 - 3
 # each;
 # everywhere_refined, crushing everywhere in the dense chamber at 100 kPa (the coarse zones' events
@@ -223,8 +223,8 @@ for k in 1 2 3; do
   spec[refined_N34_pristine_w40_d8_s$k]=dense:34:region:$v:40:2:normal:1e5:$seed:scaled:8::refine=1,distribution=normal
   group[pristine_deep]+=" refined_N34_pristine_w40_s$k refined_N34_pristine_w40_d8_s$k"
   # the engineer's set at the width the width study ends on (40 D_c): loose at 100 kPa, dense and
-  # loose at 400, crushing in the zone, beside the 40 D_c tests (dense, 100 kPa)
-  for p in 1 4; do
+  # loose at 200 and 400, crushing in the zone, beside the 40 D_c tests (dense, 100 kPa)
+  for p in 1 2 4; do
     for d in dense loose; do
       [ "$d$p" = dense1 ] && { group[pristine_stress_w40]+=" refined_N34_pristine_w40_s$k"; continue; }
       spec[refined_N34_pristine_w40_${d}_${p}00kPa_s$k]=$d:34:region:$v:40:2:normal:${p}e5:$seed:scaled:4::refine=1,distribution=normal

@@ -3,14 +3,15 @@
 processor and periodic boundary is replaced in place, its fragments added to the neighbour lists,
 on 1 - 4 ranks (tests/regression/burst/in.event_lists).
 
-  python3 test_event_lists.py LIGGGHTS WORKDIR CASE RANKS     CASE: interior or mixed
+  python3 test_event_lists.py LIGGGHTS WORKDIR CASE RANKS     CASE: interior, mixed or inherit
   python3 test_event_lists.py --list
 
 Each case runs the deck twice, with 'event_lists insert check_lists yes' and with 'event_lists
 rebuild', and asserts: the same events and fragment tags, particles = initial + 13 x events, the books
 to 1e-12, every tag unique; with insert, every touching pair in the neighbour list at every step
 until the next build (check_lists stops the run otherwise); and the same particles at the end, within
-1e-9 m, as the run that rebuilt.
+1e-9 m, as the run that rebuilt. Case inherit (in.event_lists_inherit) checks that the fragments made
+in place hold their mother's fix property/atom values.
 """
 import math
 import os
@@ -60,13 +61,21 @@ def write_data(path, case):
     return breakable
 
 
-def run(liggghts, work, case, ranks, lists):
+def run(liggghts, work, case, ranks, lists, deck="in.event_lists"):
     os.makedirs(work, exist_ok=True)
     breakable = write_data(os.path.join(work, "event_lists.data"), case)
     extra = "event_lists insert check_lists yes" if lists == "insert" else "event_lists rebuild"
-    run_deck(liggghts, os.path.join(BURST, "in.event_lists"), work,
+    run_deck(liggghts, os.path.join(BURST, deck), work,
              {"log": "events.csv", "out": "final.dump", "crush_extra": extra}, ranks=ranks, keep=True)
     return breakable
+
+
+def read_events(work):
+    """fix crush's event log (events.csv), one dict an event."""
+    with open(os.path.join(work, "events.csv")) as f:
+        rows = f.read().splitlines()
+    header = rows[0].split(",")
+    return [dict(zip(header, r.split(","))) for r in rows[1:]]
 
 
 def check_run(work, breakable, label):
@@ -77,10 +86,7 @@ def check_run(work, breakable, label):
            or abs(row["gsd"] - v0) > 1e-12 * v0 or row["KinEng"] != row["KinEng"]]
     check(not bad, "%s: at every thermo row (%d) particles = %d + 13 x events, books to 1e-12, no NaN"
           % (label, len(thermo), n0))
-    with open(os.path.join(work, "events.csv")) as f:
-        rows = f.read().splitlines()
-    header = rows[0].split(",")
-    log = [dict(zip(header, r.split(","))) for r in rows[1:]]
+    log = read_events(work)
     check([int(e["tag"]) for e in log] == breakable and all(e["step"] == "1" for e in log),
           "%s: the burst step breaks exactly the %d breakable grains, in tag order" % (label, len(breakable)))
     expected = [[str(n0 + 1 + FRAGMENTS * k + f) for f in range(FRAGMENTS)] for k in range(len(breakable))]
@@ -119,6 +125,23 @@ def compare(liggghts, work, case, ranks):
 def case_interior(liggghts, work, ranks):
     """A burst of 175 grains, each two cells from every processor and periodic boundary."""
     compare(liggghts, work, "interior", ranks)
+
+
+@variants(*each_rank_count(1, 2, 3, 4), timeout=600)
+def case_inherit(liggghts, work, ranks):
+    """The interior burst with a user's fix property/atom, scalar and vector, set from each grain's tag
+    (in.event_lists_inherit): every fragment made in place, the one copied into its mother's slot
+    among them, holds its mother's values (tag, 2 tag, -tag), every other grain its own."""
+    ranks = int(ranks)
+    breakable = run(liggghts, work, "interior", ranks, "insert", "in.event_lists_inherit")
+    inserted, _, final = check_run(work, breakable, "inherit, insert, %d rank(s)" % ranks)
+    check(inserted == 1, "the burst was replaced without a rebuild (event steps inserted: %d)" % inserted)
+    mother = {int(e["fragment_%d" % (k + 1)]): int(e["tag"]) for e in read_events(work) for k in range(FRAGMENTS)}
+    wrong = [r["id"] for r in final
+             if [r["f_tag_copy"], r["f_tag_vector[1]"], r["f_tag_vector[2]"], r["f_tag_vector[3]"]]
+             != [float(m) for m in (lambda t: (t, t, 2 * t, -t))(mother.get(int(r["id"]), int(r["id"])))]]
+    check(not wrong, "on %d rank(s) all %d fragments hold their mother's scalar and vector, the %d grains their "
+          "own (%d wrong)" % (ranks, len(mother), len(final) - len(mother), len(wrong)))
 
 
 @variants(*each_rank_count(1, 2, 3, 4), timeout=600)
