@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <typeinfo>
 #include <unordered_set>
 
 #include "atom.h"
@@ -15,6 +16,9 @@
 #include "error.h"
 #include "compute.h"
 #include "fix.h"
+#include "fix_contact_history_mesh.h"
+#include "fix_mesh_surface.h"
+#include "fix_neighlist_mesh.h"
 #include "fix_wall_gran.h"
 #include "modify.h"
 #include "my_page.h"
@@ -22,6 +26,7 @@
 #include "neigh_request.h"
 #include "neighbor.h"
 #include "primitive_wall.h"
+#include "tri_mesh.h"
 
 using namespace LAMMPS_NS;
 
@@ -61,13 +66,15 @@ std::string CrushListInsertion::unsupported_reason()
     list_ = neighbor->lists[i];
   }
   if (!list_) return "there is no granular pair list";
-  // Fixes that act at a build keep per-particle indices of their own; a primitive wall's list is
-  // extended here (extend_wall_lists).
+  // Fixes that act at a build keep per-particle indices of their own; the walls' lists are extended
+  // here: a primitive wall's (extend_wall_lists), a mesh's and its contact history (extend_mesh_lists).
   for (int k = 0; k < modify->nfix; k++) {
     if (!(modify->fmask[k] & FixConst::PRE_NEIGHBOR)) continue;
-    FixWallGran *wall = dynamic_cast<FixWallGran *>(modify->fix[k]);
-    if (wall && wall->primitiveWall()) continue;
-    return std::string("fix ") + modify->fix[k]->style + " keeps lists of its own between builds";
+    Fix *fix = modify->fix[k];
+    if (dynamic_cast<FixWallGran *>(fix) || dynamic_cast<FixNeighlistMesh *>(fix) ||
+        typeid(*fix) == typeid(FixContactHistoryMesh))
+      continue;
+    return std::string("fix ") + fix->style + " keeps lists of its own between builds";
   }
   return std::string();
 }
@@ -179,6 +186,7 @@ void CrushListInsertion::close()
     }
   set_hold_positions();
   extend_wall_lists();
+  extend_mesh_lists();
   atom->map_init();  // collective: the new tags lie beyond the map (replace_mothers runs on every processor)
   atom->map_set();
 }
@@ -270,9 +278,46 @@ void CrushListInsertion::extend_wall_lists()
   }
 }
 
+// The same for each mesh: a fragment joins the triangles' lists where its mother was (the periodic
+// ghosts' indices there move up with the others), and every fragment, the one in her slot too,
+// starts without mesh contacts.
+void CrushListInsertion::extend_mesh_lists()
+{
+  for (int k = 0; k < modify->nfix; k++) {
+    FixMeshSurface *mesh = dynamic_cast<FixMeshSurface *>(modify->fix[k]);
+    FixNeighlistMesh *lists = mesh ? mesh->meshNeighlist() : NULL;
+    if (!lists) continue;
+    int added = 0;
+    for (int t = 0; t < lists->n_triangle_lists(); t++) {
+      std::vector<int> &listed = lists->contact_list(t);
+      const std::size_t n = listed.size();
+      for (std::size_t e = 0; e < n; e++) {
+        if (listed[e] >= nlocal_before_) {
+          listed[e] += shift_;
+        } else if (family_of_[listed[e]] >= 0) {
+          const Family &f = families_[family_of_[listed[e]]];
+          listed.insert(listed.end(), f.members.begin() + 1, f.members.end());
+          added += static_cast<int>(f.members.size()) - 1;
+        }
+      }
+    }
+    lists->contacts_added(added);
+    FixContactHistoryMesh *history = mesh->contactHistory();
+    if (!history) continue;
+    for (const Family &f : families_)
+      for (int b : f.members) history->clear_contacts(b);
+  }
+}
+
+void CrushListInsertion::verify() const
+{
+  verify_pairs();
+  verify_mesh_lists();
+}
+
 // Every pair of touching particles (owned with owned or ghost) is in the list: sorted by x, each
 // particle is compared with those within the largest contact distance along x.
-void CrushListInsertion::verify() const
+void CrushListInsertion::verify_pairs() const
 {
   if (!list_) return;
   const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
@@ -304,6 +349,36 @@ void CrushListInsertion::verify() const
       snprintf(msg, sizeof(msg), "fix crush (check_lists): particles %d and %d touch but are not in the neighbour list",
                atom->tag[i], atom->tag[j]);
       error->one(FLERR, msg);
+    }
+  }
+}
+
+// Every owned particle of a mesh wall's group that touches a triangle (as fix wall/gran resolves the
+// contact) is in that triangle's list.
+void CrushListInsertion::verify_mesh_lists() const
+{
+  const double reach = neighbor->contactDistanceFactor - 1.0;
+  for (int k = 0; k < modify->nfix; k++) {
+    FixMeshSurface *mesh = dynamic_cast<FixMeshSurface *>(modify->fix[k]);
+    FixNeighlistMesh *lists = mesh ? mesh->meshNeighlist() : NULL;
+    if (!lists) continue;
+    TriMesh *triangles = mesh->triMesh();
+    const int ntri = triangles->sizeLocal() + triangles->sizeGhost();
+    for (int t = 0; t < ntri && t < lists->n_triangle_lists(); t++) {
+      const std::vector<int> &listed = lists->contact_list(t);
+      const std::unordered_set<int> in_list(listed.begin(), listed.end());
+      for (int i = 0; i < atom->nlocal; i++) {
+        if (!(atom->mask[i] & lists->groupbit_wall_mesh) || in_list.count(i)) continue;
+        double delta[3], bary[3];
+        int barysign;
+        const double deltan = triangles->resolveTriSphereContactBary(i, t, atom->radius[i], atom->x[i], delta, bary,
+                                                                     barysign, true);
+        if (deltan > 0.0 && deltan >= reach * atom->radius[i]) continue;
+        char msg[256];
+        snprintf(msg, sizeof(msg), "fix crush (check_lists): particle %d touches triangle %d of mesh %s but is not "
+                 "in its list", atom->tag[i], triangles->id(t), mesh->id);
+        error->one(FLERR, msg);
+      }
     }
   }
 }

@@ -10,6 +10,7 @@
    its fragments concern this processor alone: they are appended to the owned particles (the ghosts
    move up by as many slots), given list entries against the mother's neighbours and each other,
    and the mother's slot, now holding a fragment, keeps her entries with their histories cleared.
+   Walls, primitive or meshes, list a fragment where they listed its mother; its wall contacts are new.
    Anything else (a grain on a boundary, a list or fix this class cannot update) takes LIGGGHTS'
    full rebuild, as before.
 ------------------------------------------------------------------------- */
@@ -42,7 +43,8 @@ class CrushListInsertion : protected Pointers {
   // After the last fragment: the spare slot closed, lists, hold positions, walls and the atom map set.
   void close();
 
-  // Tests ('check_lists yes'): every touching pair of this processor's particles is in the list.
+  // Tests ('check_lists yes'): every touching pair of this processor's particles is in the list,
+  // and every particle touching a mesh's triangle in that triangle's list.
   void verify() const;
 
  private:
@@ -61,6 +63,9 @@ class CrushListInsertion : protected Pointers {
   void append_list(int i, const std::vector<int> &pairs);
   void set_hold_positions();
   void extend_wall_lists();
+  void extend_mesh_lists();
+  void verify_pairs() const;
+  void verify_mesh_lists() const;
 
   class NeighList *list_;       // the granular half list (its history list: list_->listgranhistory)
   std::vector<Family> families_;

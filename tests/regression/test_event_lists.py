@@ -3,7 +3,7 @@
 processor and periodic boundary is replaced in place, its fragments added to the neighbour lists,
 on 1 - 4 ranks (tests/regression/burst/in.event_lists).
 
-  python3 test_event_lists.py LIGGGHTS WORKDIR CASE RANKS     CASE: interior, mixed or inherit
+  python3 test_event_lists.py LIGGGHTS WORKDIR CASE RANKS     CASE: interior, mixed, inherit or mesh
   python3 test_event_lists.py --list
 
 Each case runs the deck twice, with 'event_lists insert check_lists yes' and with 'event_lists
@@ -38,30 +38,56 @@ def interior(i, j, k):
             and min(abs(k - p) for p in PLANES_YZ) >= 2)
 
 
+def breaks(case, i, j, k):
+    """Type 2: the interior grains; in case 'mixed' also the grains on the periodic face x = 0 (sent on
+    every rank count); in case 'mesh' (z not periodic, one processor along it) the grains of the
+    lowest three layers two cells from every plane along x and y, those resting on the floor among them."""
+    if case == "mesh":
+        return interior(i, j, 2) and k <= 2
+    return interior(i, j, k) or (case == "mixed" and i == 0)
+
+
 def write_data(path, case):
-    """The lattice, tagged x fastest; type 2 (breakable): the interior grains, and in case 'mixed' also
-    the grains on the periodic face x = 0 (sent on every rank count)."""
+    """The lattice, tagged x fastest, and its breakable grains' tags. In case 'mesh' it stands one cell
+    up in a box one cell taller, and floor.stl beside the data file is the floor under its bottom layer."""
     nx, ny, nz = CELLS
+    lift = SPACING if case == "mesh" else 0.0
     lines = ["LIGGGHTS data file: event_lists lattice", "", "%d atoms" % (nx * ny * nz), "2 atom types", ""]
     for d, n in zip("xyz", CELLS):
-        lines.append("0 %.17g %slo %shi" % (n * SPACING, d, d))
+        lines.append("0 %.17g %slo %shi" % ((n + 1 if lift and d == "z" else n) * SPACING, d, d))
     lines += ["", "Atoms", ""]
     tag, breakable = 0, []
     for k in range(nz):
         for j in range(ny):
             for i in range(nx):
                 tag += 1
-                breaks = interior(i, j, k) or (case == "mixed" and i == 0)
-                if breaks:
+                if breaks(case, i, j, k):
                     breakable.append(tag)
-                lines.append("%d %d %.17g 2650 %.17g %.17g %.17g" % (tag, 2 if breaks else 1, DIAMETER, i * SPACING,
-                                                                      j * SPACING, k * SPACING))
+                lines.append("%d %d %.17g 2650 %.17g %.17g %.17g" % (tag, 2 if breaks(case, i, j, k) else 1, DIAMETER,
+                                                                      i * SPACING, j * SPACING, lift + k * SPACING))
     with open(path, "w") as f:
         f.write("\n".join(lines) + "\n")
+    if lift:
+        write_floor(os.path.join(os.path.dirname(path), "floor.stl"), lift - 0.99 * DIAMETER / 2)
     return breakable
 
 
-def run(liggghts, work, case, ranks, lists, deck="in.event_lists"):
+def write_floor(path, z):
+    """A plane at height z under the lattice, two triangles a cell (small beside the sub-domains)."""
+    nx, ny, _ = CELLS
+    facets = []
+    for i in range(nx):
+        for j in range(ny):
+            a, b, c, d = [((i + di) * SPACING, (j + dj) * SPACING, z) for di, dj in ((0, 0), (1, 0), (1, 1), (0, 1))]
+            for tri in ((a, b, c), (a, c, d)):
+                facets.append("facet normal 0 0 1\n outer loop\n%s endloop\nendfacet" % "".join(
+                    "  vertex %.17g %.17g %.17g\n" % v for v in tri))
+    with open(path, "w") as f:
+        f.write("solid floor\n%s\nendsolid floor\n" % "\n".join(facets))
+
+
+def run(liggghts, work, case, ranks, lists, deck=None):
+    deck = deck or ("in.event_lists_mesh" if case == "mesh" else "in.event_lists")
     os.makedirs(work, exist_ok=True)
     breakable = write_data(os.path.join(work, "event_lists.data"), case)
     extra = "event_lists insert check_lists yes" if lists == "insert" else "event_lists rebuild"
@@ -108,7 +134,7 @@ def compare(liggghts, work, case, ranks):
         breakable = run(liggghts, folder, case, ranks, lists)
         runs[lists] = check_run(folder, breakable, "%s, %s, %d rank(s)" % (case, lists, ranks))
     (inserted, builds_insert, final_insert), (rebuilt, builds_rebuild, final_rebuild) = runs["insert"], runs["rebuild"]
-    if case == "interior":
+    if case in ("interior", "mesh"):
         check(inserted == 1 and rebuilt == 0, "the burst of %d interior grains was replaced without a rebuild "
               "(event steps inserted: %d with insert, %d with rebuild)" % (len(breakable), inserted, rebuilt))
         check(builds_insert < builds_rebuild, "neighbour builds: %d with insert, %d with rebuild"
@@ -142,6 +168,14 @@ def case_inherit(liggghts, work, ranks):
              != [float(m) for m in (lambda t: (t, t, 2 * t, -t))(mother.get(int(r["id"]), int(r["id"])))]]
     check(not wrong, "on %d rank(s) all %d fragments hold their mother's scalar and vector, the %d grains their "
           "own (%d wrong)" % (ranks, len(mother), len(final) - len(mother), len(wrong)))
+
+
+@variants(*each_rank_count(1, 2, 3, 4), timeout=600)
+def case_mesh(liggghts, work, ranks):
+    """The lattice on a mesh floor (in.event_lists_mesh): 120 grains of the lowest layers, those
+    touching the floor among them, burst in one step; with check_lists every particle touching a
+    triangle is in its list at every step until the next build."""
+    compare(liggghts, work, "mesh", ranks)
 
 
 @variants(*each_rank_count(1, 2, 3, 4), timeout=600)
