@@ -532,6 +532,22 @@ COLLECTIVES = os.path.join(os.path.dirname(os.path.abspath(__file__)), "collecti
 
 
 @variants(*each_rank_count(2))
+def case_cone_event_lists(liggghts, work, ranks):
+    """The short penetration of cone_short with fix crush's check_lists: event steps replaced without a
+    rebuild (the fragments added to the granular list and to the moving cone's triangle lists) and,
+    at every step until the next build, every touching pair in the list and every particle touching
+    a triangle in that triangle's list (the run stops otherwise); the books as in cone_short."""
+    ranks = int(ranks)
+    folder = prepare_chamber(liggghts, work, ranks)
+    out = push(liggghts, folder, ranks, crushing="region", crush_lists="check_lists yes")
+    _, _, events = check_test_books(folder, "dense_region")
+    inserted = int(float(re.search(r"EVENT STEPS WITHOUT A REBUILD (\S+)", out).group(1)))
+    steps = len({e["step"] for e in events})
+    check(1 <= inserted <= steps, "%d of the test's %d event steps replaced without a rebuild, the lists checked at "
+          "every step until the next build" % (inserted, steps))
+
+
+@variants(*each_rank_count(2))
 def case_cone_collectives(liggghts, work, ranks):
     """The global collectives of the short penetration's steps on 2 ranks, counted by an MPI
     interposer (collectives/count_collectives.c, preloaded: each step's calls on rank 0, a step
