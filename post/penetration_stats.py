@@ -17,7 +17,8 @@ against a uniform one): the means, their difference with the unpaired standard e
 whether it is resolved at 2 standard errors, and a field of the study (--field, default q_c_MPa);
 --ratio A B gives B's mean over A's with its standard error, and each seed's own ratio where both ran
 it (the density effect: dense over loose); --fit-power FIELD the exponent of q_c against a numeric
-field (the stress exponent: log q_c against log sigma_v, a factor per seed).
+field (the stress exponent: log q_c against log sigma_v, a factor per seed) and, over three levels or
+more, each seed's exponent between neighbouring levels and its change from one step to the next.
 
     post/penetration_stats.py study.csv [more.csv ...] [--vary v] [--vary crushing] [--fit-log2 v]
                               [--fit-power sigma_v] [--members] [--markdown] [--versus A B]
@@ -206,6 +207,32 @@ def print_power(table, seeded, field):
     for members, runs, seeds, slope, se in fits(table, seeded, field, power=True):
         print("%s: %s = %s: exponent %.3f +- %.3f (%d runs, %d seeds)"
               % (label(members[0], (field,)), field, ", ".join(m[at] for m in members), slope, se, runs, seeds))
+        if len(members) > 2:
+            print_local_powers(seeded, members, at)
+
+
+def local_powers(seeded, x, y, at):
+    """{seed: log(q_c(y) / q_c(x)) / log(field(y) / field(x))} over the seeds both settings ran."""
+    a = dict((r["seed"], number(r["q_c_MPa"])) for r in seeded[x])
+    b = dict((r["seed"], number(r["q_c_MPa"])) for r in seeded[y])
+    step = math.log(number(y[at]) / number(x[at]))
+    return dict((seed, math.log(b[seed] / a[seed]) / step) for seed in a if seed in b)
+
+
+def print_local_powers(seeded, members, at):
+    """Whether one power holds over three or more levels: each seed's exponent between neighbouring
+    levels, and the change of that exponent from one step to the next, paired by seed."""
+    steps = [local_powers(seeded, x, y, at) for x, y in zip(members, members[1:])]
+    for (x, y), local in zip(zip(members, members[1:]), steps):
+        n, mean, _, se = statistics(list(local.values()))
+        print("    %s -> %s: exponent %.3f +- %.3f (%d seeds)" % (x[at], y[at], mean, se, n))
+    for k in range(len(steps) - 1):
+        common = [seed for seed in steps[k] if seed in steps[k + 1]]
+        if len(common) < 2:
+            continue
+        n, mean, _, se = statistics([steps[k + 1][seed] - steps[k][seed] for seed in common])
+        print("    change from the step to %s to the next: %+.3f +- %.3f (paired, %d seeds), resolved: %s"
+              % (members[k + 1][at], mean, se, n, "yes" if abs(mean) > 2 * se else "no"))
 
 
 def picked(rows, pattern, field):

@@ -893,7 +893,8 @@ def case_stats_ratio_power(liggghts, work):
     1.833 ((0.1155 / 1.2)^2 + (0.1155 / 2.2)^2)^0.5 = 0.201; each seed's own ratio (2, 1.833, 1.714)
     1.849 +- 0.083, both resolved from 1. q_c = a_seed sigma_v^0.6 2^e at 100, 200, 400 kPa, e = (+0.1,
     -0.2, +0.1) in each seed (orthogonal to the intercepts and to log2 sigma_v): the exponent 0.600 +-
-    0.077, as --fit-log2's slope on the same ladder."""
+    0.077, as --fit-log2's slope on the same ladder; between neighbouring levels 0.6 - 0.3 = 0.300 and
+    0.6 + 0.3 = 0.900 in every seed, a change of +0.600 +- 0.000, resolved."""
     del liggghts
     rows = [("loose_s%d" % (k + 1), seed, q, {"density": "loose"}) for k, (seed, q) in enumerate(zip(SEEDS, (1.0, 1.2, 1.4)))]
     rows += [("dense_s%d" % (k + 1), seed, q, {}) for k, (seed, q) in enumerate(zip(SEEDS, (2.0, 2.2, 2.4)))]
@@ -908,6 +909,11 @@ def case_stats_ratio_power(liggghts, work):
           "dense over loose: 1.833 +- 0.201 unpaired, 1.849 +- 0.083 paired")
     powers = re.findall(r"sigma_v = 1e5, 2e5, 4e5: exponent (\S+) \+- (\S+) \((\d+) runs, (\d+) seeds\)", text)
     check(powers == [("0.600", "0.077", "9", "3")], "q_c against sigma_v: exponent, se, runs, seeds %s" % powers)
+    local = re.findall(r"(\S+) -> (\S+): exponent (\S+) \+- (\S+) \((\d+) seeds\)", text)
+    change = re.findall(r"change from the step to 2e5 to the next: (\S+) \+- (\S+) \(paired, 3 seeds\), resolved: (\w+)", text)
+    check(local == [("1e5", "2e5", "0.300", "0.000", "3"), ("2e5", "4e5", "0.900", "0.000", "3")]
+          and change == [("+0.600", "0.000", "yes")],
+          "local exponents %s, their change %s" % (local, change))
 
 
 def case_cpt_interpretation(liggghts, work):
