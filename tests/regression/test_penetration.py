@@ -636,9 +636,12 @@ def case_cone_resume(liggghts, work, ranks):
         whole = read_rows(os.path.join(folder, "penetration_whole_N80.csv"))
         resumed = read_rows(os.path.join(folder, "penetration_killed_N80.csv"))
         before = [r for r in resumed if r["step"] <= newest]
-        check(before == whole[:len(before)] and len(resumed) == len(whole),
-              "the resumed history's %d rows up to step %d are the uninterrupted one's; %d rows in all"
-              % (len(before), newest, len(resumed)))
+        # after the checkpoint the sums' order differs (the restart's particle order against the
+        # fragments' slots of event steps replaced in place): the time steps part, and the test may
+        # end a history row later or earlier
+        check(before == whole[:len(before)] and abs(len(resumed) - len(whole)) <= 1,
+              "the resumed history's %d rows up to step %d are the uninterrupted one's; %d rows in all against %d"
+              % (len(before), newest, len(resumed), len(whole)))
         n0 = grains0(folder)
         check(all(r["particles"] == n0 + 13 * r["events"] for r in resumed),
               "particles = %d + 13 x events at every row after the resume (%d events)" % (n0, resumed[-1]["events"]))
