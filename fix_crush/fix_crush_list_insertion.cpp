@@ -283,10 +283,8 @@ void CrushListInsertion::extend_wall_lists()
 // starts without mesh contacts.
 void CrushListInsertion::extend_mesh_lists()
 {
-  for (int k = 0; k < modify->nfix; k++) {
-    FixMeshSurface *mesh = dynamic_cast<FixMeshSurface *>(modify->fix[k]);
-    FixNeighlistMesh *lists = mesh ? mesh->meshNeighlist() : NULL;
-    if (!lists) continue;
+  for (FixMeshSurface *mesh : meshes_with_lists()) {
+    FixNeighlistMesh *lists = mesh->meshNeighlist();
     int added = 0;
     for (int t = 0; t < lists->n_triangle_lists(); t++) {
       std::vector<int> &listed = lists->contact_list(t);
@@ -307,6 +305,17 @@ void CrushListInsertion::extend_mesh_lists()
     for (const Family &f : families_)
       for (int b : f.members) history->clear_contacts(b);
   }
+}
+
+// The mesh walls' meshes that keep particle lists (those a fix wall/gran uses).
+std::vector<FixMeshSurface *> CrushListInsertion::meshes_with_lists() const
+{
+  std::vector<FixMeshSurface *> meshes;
+  for (int k = 0; k < modify->nfix; k++) {
+    FixMeshSurface *mesh = dynamic_cast<FixMeshSurface *>(modify->fix[k]);
+    if (mesh && mesh->meshNeighlist()) meshes.push_back(mesh);
+  }
+  return meshes;
 }
 
 void CrushListInsertion::verify() const
@@ -358,10 +367,8 @@ void CrushListInsertion::verify_pairs() const
 void CrushListInsertion::verify_mesh_lists() const
 {
   const double reach = neighbor->contactDistanceFactor - 1.0;
-  for (int k = 0; k < modify->nfix; k++) {
-    FixMeshSurface *mesh = dynamic_cast<FixMeshSurface *>(modify->fix[k]);
-    FixNeighlistMesh *lists = mesh ? mesh->meshNeighlist() : NULL;
-    if (!lists) continue;
+  for (FixMeshSurface *mesh : meshes_with_lists()) {
+    FixNeighlistMesh *lists = mesh->meshNeighlist();
     TriMesh *triangles = mesh->triMesh();
     const int ntri = triangles->sizeLocal() + triangles->sizeGhost();
     for (int t = 0; t < ntri && t < lists->n_triangle_lists(); t++) {

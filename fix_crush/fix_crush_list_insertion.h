@@ -64,6 +64,7 @@ class CrushListInsertion : protected Pointers {
   void set_hold_positions();
   void extend_wall_lists();
   void extend_mesh_lists();
+  std::vector<class FixMeshSurface *> meshes_with_lists() const;
   void verify_pairs() const;
   void verify_mesh_lists() const;
 

@@ -115,6 +115,27 @@ def read_dump(path):
     return snapshots
 
 
+def read_events(path):
+    """fix crush's event log (its 'log' file), one dict an event, the values as text."""
+    with open(path) as f:
+        header = f.readline().strip().split(",")
+        return [dict(zip(header, line.strip().split(","))) for line in f if line.strip()]
+
+
+FRAGMENTS = 14  # fix crush's fragments a grain (the 'fourteen' layout)
+
+
+def inheritance_errors(final, events):
+    """The burst decks' inheritance check (burst/in.burst_inherit_run): ({fragment tag: mother tag},
+    the ids in the final dump whose tagCopy and tagVector are not their mother's (tag, tag, 2 tag,
+    -tag), or, for a particle no event made, not its own)."""
+    mother = {int(e["fragment_%d" % (f + 1)]): int(e["tag"]) for e in events for f in range(FRAGMENTS)}
+    wrong = [r["id"] for r in final
+             if [r["f_tag_copy"], r["f_tag_vector[1]"], r["f_tag_vector[2]"], r["f_tag_vector[3]"]]
+             != [float(m) for m in (lambda t: (t, t, 2 * t, -t))(mother.get(int(r["id"]), int(r["id"])))]]
+    return mother, wrong
+
+
 SKIPPED = 77  # exit status of a test that cannot run in this build (CTest's SKIP_RETURN_CODE)
 
 

@@ -16,14 +16,13 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from liggghts_run import check, each_rank_count, read_dump, read_thermo, run_deck, variants  # noqa: E402
-from liggghts_run import read_balance_moves  # noqa: E402
+from liggghts_run import FRAGMENTS, inheritance_errors, read_balance_moves, read_events  # noqa: E402
 from liggghts_run import main as test_main  # noqa: E402
 
 BURST = os.path.join(os.path.dirname(os.path.abspath(__file__)), "burst")
 CELLS = 12              # grains per box edge: 1728 grains
 SPACING = 0.21e-3       # m, lattice spacing and box = CELLS x SPACING
 DIAMETER = 0.2121e-3    # m: 1% overlap with each neighbour
-FRAGMENTS = 14
 
 
 def grain_type(i, j, k):
@@ -49,13 +48,6 @@ def write_data(path):
     with open(path, "w") as f:
         f.write("\n".join(lines) + "\n")
     return types
-
-
-def read_events(path):
-    with open(path) as f:
-        lines = f.read().splitlines()
-    header = lines[0].split(",")
-    return [dict(zip(header, line.split(","))) for line in lines[1:]]
 
 
 def run_burst(liggghts, deck, work, case, ranks, extra=None, variables=None):
@@ -159,10 +151,7 @@ def case_inherit(liggghts, work, ranks):
     ranks = int(ranks)
     types = run_burst(liggghts, "in.burst_inherit", work, "half", ranks)
     log, final = check_run(work, "half", ranks, types)
-    mother = {int(e["fragment_%d" % (f + 1)]): int(e["tag"]) for e in log for f in range(FRAGMENTS)}
-    wrong = [r["id"] for r in final
-             if [r["f_tag_copy"], r["f_tag_vector[1]"], r["f_tag_vector[2]"], r["f_tag_vector[3]"]]
-             != [float(m) for m in (lambda t: (t, t, 2 * t, -t))(mother.get(int(r["id"]), int(r["id"])))]]
+    mother, wrong = inheritance_errors(final, log)
     check(not wrong, "on %d rank(s) all %d fragments hold their mother's scalar and vector, the %d grains their "
           "own (%d wrong)" % (ranks, len(mother), len(final) - len(mother), len(wrong)))
 

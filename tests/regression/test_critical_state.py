@@ -19,7 +19,7 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from liggghts_run import check, each_rank_count, edited_deck, read_dump, run_deck, variants  # noqa: E402
 from liggghts_run import main as test_main  # noqa: E402
-from test_crush import read_events  # noqa: E402
+from liggghts_run import read_events  # noqa: E402
 from test_fontainebleau import read_history  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))

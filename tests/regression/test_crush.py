@@ -10,19 +10,13 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from liggghts_run import check, each_rank_count, edited_deck, printed, read_dump, read_thermo, run_deck, variants  # noqa: E402
+from liggghts_run import read_events  # noqa: E402
 from liggghts_run import main as test_main  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 CRUSH = os.path.join(os.path.dirname(os.path.abspath(__file__)), "crush")
 SINGLE = os.path.join(ROOT, "examples", "single_grain", "in.single_grain")
 N0 = 512  # particles of the compression decks
-
-
-def read_events(path):
-    with open(path) as f:
-        lines = f.read().splitlines()
-    header = lines[0].split(",")
-    return [dict(zip(header, line.split(","))) for line in lines[1:]]
 
 
 def case_single_grain(liggghts, work):

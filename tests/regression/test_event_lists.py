@@ -20,13 +20,13 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from liggghts_run import check, each_rank_count, read_dump, read_thermo, run_deck, variants  # noqa: E402
+from liggghts_run import FRAGMENTS, inheritance_errors, read_events  # noqa: E402
 from liggghts_run import main as test_main  # noqa: E402
 
 BURST = os.path.join(os.path.dirname(os.path.abspath(__file__)), "burst")
 CELLS = (24, 8, 8)       # grains along x, y, z
 SPACING = 0.21e-3        # m, lattice spacing; the box is CELLS x SPACING
 DIAMETER = 0.2121e-3     # m: 1% overlap with each neighbour
-FRAGMENTS = 14
 # Slabs along x on 1 - 4 ranks cut at these cells (the periodic faces at 0 and 24); the ghost cutoff is
 # a diameter plus the skin (0.232 mm), so a grain two cells from every plane is sent in no swap.
 PLANES_X = (0, 6, 8, 12, 16, 18, 24)
@@ -61,9 +61,10 @@ def write_data(path, case):
         for j in range(ny):
             for i in range(nx):
                 tag += 1
-                if breaks(case, i, j, k):
+                breakable_here = breaks(case, i, j, k)
+                if breakable_here:
                     breakable.append(tag)
-                lines.append("%d %d %.17g 2650 %.17g %.17g %.17g" % (tag, 2 if breaks(case, i, j, k) else 1, DIAMETER,
+                lines.append("%d %d %.17g 2650 %.17g %.17g %.17g" % (tag, 2 if breakable_here else 1, DIAMETER,
                                                                       i * SPACING, j * SPACING, lift + k * SPACING))
     with open(path, "w") as f:
         f.write("\n".join(lines) + "\n")
@@ -96,14 +97,6 @@ def run(liggghts, work, case, ranks, lists, deck=None):
     return breakable
 
 
-def read_events(work):
-    """fix crush's event log (events.csv), one dict an event."""
-    with open(os.path.join(work, "events.csv")) as f:
-        rows = f.read().splitlines()
-    header = rows[0].split(",")
-    return [dict(zip(header, r.split(","))) for r in rows[1:]]
-
-
 def check_run(work, breakable, label):
     n0 = CELLS[0] * CELLS[1] * CELLS[2]
     v0 = n0 * math.pi / 6 * DIAMETER ** 3
@@ -112,7 +105,7 @@ def check_run(work, breakable, label):
            or abs(row["gsd"] - v0) > 1e-12 * v0 or row["KinEng"] != row["KinEng"]]
     check(not bad, "%s: at every thermo row (%d) particles = %d + 13 x events, books to 1e-12, no NaN"
           % (label, len(thermo), n0))
-    log = read_events(work)
+    log = read_events(os.path.join(work, "events.csv"))
     check([int(e["tag"]) for e in log] == breakable and all(e["step"] == "1" for e in log),
           "%s: the burst step breaks exactly the %d breakable grains, in tag order" % (label, len(breakable)))
     expected = [[str(n0 + 1 + FRAGMENTS * k + f) for f in range(FRAGMENTS)] for k in range(len(breakable))]
@@ -162,10 +155,7 @@ def case_inherit(liggghts, work, ranks):
     breakable = run(liggghts, work, "interior", ranks, "insert", "in.event_lists_inherit")
     inserted, _, final = check_run(work, breakable, "inherit, insert, %d rank(s)" % ranks)
     check(inserted == 1, "the burst was replaced without a rebuild (event steps inserted: %d)" % inserted)
-    mother = {int(e["fragment_%d" % (k + 1)]): int(e["tag"]) for e in read_events(work) for k in range(FRAGMENTS)}
-    wrong = [r["id"] for r in final
-             if [r["f_tag_copy"], r["f_tag_vector[1]"], r["f_tag_vector[2]"], r["f_tag_vector[3]"]]
-             != [float(m) for m in (lambda t: (t, t, 2 * t, -t))(mother.get(int(r["id"]), int(r["id"])))]]
+    mother, wrong = inheritance_errors(final, read_events(os.path.join(work, "events.csv")))
     check(not wrong, "on %d rank(s) all %d fragments hold their mother's scalar and vector, the %d grains their "
           "own (%d wrong)" % (ranks, len(mother), len(final) - len(mother), len(wrong)))
 

@@ -13,6 +13,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from liggghts_run import check, each_rank_count, edited_deck, read_dump, run_deck, variants  # noqa: E402
+from liggghts_run import read_events  # noqa: E402
 from liggghts_run import main as test_main  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
@@ -293,12 +294,6 @@ def case_time_step_sequence(liggghts, work):
                                  % ((k,) + ref + now))
     check(len(rows) == len(reference["step"]), "the same %d rows: every step, particle count and dt to the bit"
           % len(rows))
-
-
-def read_events(path):
-    with open(path) as f:
-        header = f.readline().strip().split(",")
-        return [dict(zip(header, line.strip().split(","))) for line in f if line.strip()]
 
 
 @variants(timeout=600)

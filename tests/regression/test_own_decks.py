@@ -17,7 +17,7 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from liggghts_run import check, printed, read_dump, read_thermo, run_deck, variants  # noqa: E402
 from liggghts_run import main as test_main  # noqa: E402
-from test_crush import read_events  # noqa: E402
+from liggghts_run import read_events  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 OWN_DECK = os.path.join(ROOT, "doc", "own_deck.md")
