@@ -4,40 +4,81 @@
 # the zone that follows the tip, DEPTH D_c) on 1 rank and on 2 ranks, alternated so that the
 # machine's drift falls on both; prints each round's wall-clock times and ratio, then the median
 # of the in-round ratios with their range, for the whole test and per step (the two runs follow
-# different trajectories: their time steps, and so their steps to the same depth, differ). At the end of the last 2-rank test, each rank's share of
-# the particles and of the contacts (the pair work) for the decks' grids on 2 and 4 ranks
-# (2 x 1 x 1 and 2 x 2 x 1, "* * 1"), from the final dump (bench/penetration_balance.py).
+# different trajectories: their time steps, and so their steps to the same depth, differ). Each run
+# prints where its time goes per step (LIGGGHTS' breakdown of every stretch, summed: pair, neighbour
+# lists, communication, the rest; on 2 ranks each part's smallest and largest time over the ranks,
+# patches/0010), its neighbour builds, event steps and those replaced without a rebuild. With
+# LISTS=1 each round adds a 2-rank run with 'event_lists rebuild' (a rebuild at every event step),
+# and the medians of the neighbour time per step and of its share, insert against rebuild. At the
+# end of the last 2-rank test, each rank's share of the particles and of the contacts (the pair
+# work) for the decks' grids on 2 and 4 ranks (2 x 1 x 1 and 2 x 2 x 1, "* * 1"), from the final
+# dump (bench/penetration_balance.py).
 #   bash bench/penetration_speedup.sh [ROUNDS=3] [N=80] [DEPTH=8] [WIDTH=10]
+#   V=0.5882 SCENE=refine=1,distribution=normal LISTS=1 bash bench/penetration_speedup.sh 3 34 2 40
+#     (the default scene's refined pristine chamber, 40 D_c wide, at its velocity; tests of 2 D_c)
+# Environment: LIGGGHTS (build/liggghts), V (m/s, 2), SCENE (in.chamber's and in.cone's further
+# variables, name=value,name=value), LISTS (0 or 1).
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 rounds=${1:-3} n=${2:-80} depth=${3:-8} width=${4:-10}
 liggghts=${LIGGGHTS:-$here/build/liggghts}
+lists=${LISTS:-0}
 source "$here/scripts/mpi_env.sh"
+source "$here/bench/rounds.sh"
 source "$here/bench/penetration_work.sh"
-vars=(-var N "$n" -var width "$width" -var depth "$depth" -var v 2 -var vtk 0 -var checkpoint_every 0)
+vars=(-var N "$n" -var width "$width" -var depth "$depth" -var v "${V:-2}" -var vtk 0 -var checkpoint_every 0)
+scene=${SCENE:-}
+for kv in ${scene//,/ }; do vars+=(-var "${kv%%=*}" "${kv#*=}"); done
 mpirun -np 2 "$liggghts" -in in.chamber "${vars[@]}" -log chamber.log > chamber.txt 2>&1 || { tail -5 chamber.txt; exit 1; }
 grep '^CHAMBER .* N = ' chamber.txt
-ratios=() step_ratios=()
+
+# cone RANKS LABEL [LISTS]: one test, timed; prints "seconds steps neighbour-us-per-step share" and
+# its breakdown to stderr
+cone() {
+  local start seconds
+  start=$(date +%s%N)
+  mpirun -np "$1" "$liggghts" -in in.cone "${vars[@]}" -var crushing region -var label "$2" -var timing yes \
+    ${3:+-var crush_lists "event_lists $3"} -log "$2.log" > "$2.txt" 2>&1 || { tail -5 "$2.txt" >&2; exit 1; }
+  seconds=$(awk -v a="$start" -v b="$(date +%s%N)" 'BEGIN {printf "%.2f", (b - a) / 1e9}')
+  awk -v s="$seconds" -v label="$2" '
+    /^Loop time of/ {loop += $4} /^Pair  time \(%\)/ {pair += $5} /^Neigh time \(%\)/ {neigh += $5}
+    /^Comm  time \(%\)/ {comm += $5} /^Neighbor list builds/ {builds += $NF}
+    / time per processor:/ {lo[$1] += $(NF - 2); hi[$1] += $NF}
+    /^CHECKED STEPS/ {steps = $NF} /^EVENT STEPS WITHOUT A REBUILD/ {inserted = $NF}
+    /^PENETRATED/ {for (i = 1; i <= NF; i++) if ($i ~ /^events/) events = $(i - 1)}
+    END {
+      u = 1e6 / steps
+      printf "%s %d %.3f %.2f\n", s, steps, neigh * u, 100 * neigh / loop
+      printf "  %s: %.1f s, %d steps, per step %.1f us: pair %.1f, neighbour %.2f (%.1f%%), communication %.1f, the rest %.1f;" \
+             " %d builds, %d events, %d event steps without a rebuild\n",
+             label, s, steps, loop * u, pair * u, neigh * u, 100 * neigh / loop, comm * u, (loop - pair - neigh - comm) * u,
+             builds, events, inserted > "/dev/stderr"
+      if ("Pair" in lo)
+        printf "    per rank (min - max, us per step): pair %.1f - %.1f, neighbour %.2f - %.2f, communication %.1f - %.1f, the rest %.1f - %.1f\n",
+               lo["Pair"] * u, hi["Pair"] * u, lo["Neigh"] * u, hi["Neigh"] * u, lo["Comm"] * u, hi["Comm"] * u,
+               lo["Other"] * u, hi["Other"] * u > "/dev/stderr"
+    }' "$2.txt"
+}
+
+ratios=() step_ratios=() neigh_ratios=() share_ratios=()
 for round in $(seq "$rounds"); do
-  declare -A seconds=() steps=()
-  for ranks in 1 2; do
-    start=$(date +%s%N)
-    mpirun -np "$ranks" "$liggghts" -in in.cone "${vars[@]}" -var crushing region -var label "np$ranks" -log "cone$ranks.log" > "cone$ranks.txt" 2>&1 \
-      || { tail -5 "cone$ranks.txt"; exit 1; }
-    seconds[$ranks]=$(awk -v a="$start" -v b="$(date +%s%N)" 'BEGIN {printf "%.2f", (b - a) / 1e9}')
-    steps[$ranks]=$(grep -oE 'CHECKED STEPS [0-9.e+]+ OF [0-9]+' "cone$ranks.txt" | awk '{print $5}')
-  done
-  ratio=$(awk -v a="${seconds[1]}" -v b="${seconds[2]}" 'BEGIN {printf "%.3f", a / b}')
-  step_ratio=$(awk -v a="${seconds[1]}" -v b="${seconds[2]}" -v m="${steps[1]}" -v n="${steps[2]}" \
-                   'BEGIN {printf "%.3f", (a / m) / (b / n)}')
+  row=$(cone 1 np1); read -r s1 m1 _ _ <<< "$row"
+  row=$(cone 2 np2); read -r s2 m2 nu2 sh2 <<< "$row"
+  ratio=$(ratio "$s1" "$s2")
+  step_ratio=$(awk -v a="$s1" -v b="$s2" -v m="$m1" -v n="$m2" 'BEGIN {print (a / m) / (b / n)}')
   ratios+=("$ratio") step_ratios+=("$step_ratio")
-  echo "round $round: 1 rank ${seconds[1]} s (${steps[1]} steps), 2 ranks ${seconds[2]} s (${steps[2]} steps)," \
-       "speed-up $ratio, per step $step_ratio ($(grep '^PENETRATED' cone2.txt))"
+  echo "round $round: 1 rank $s1 s ($m1 steps), 2 ranks $s2 s ($m2 steps), speed-up $ratio, per step $step_ratio ($(grep '^PENETRATED' np2.txt))"
+  if [ "$lists" = 1 ]; then
+    row=$(cone 2 np2_rebuild rebuild); read -r _ _ nu3 sh3 <<< "$row"
+    neigh_ratios+=("$(ratio "$nu2" "$nu3")") share_ratios+=("$(ratio "$sh2" "$sh3")")
+    echo "round $round: 2 ranks, neighbour time per step $nu2 us (share $sh2%) with the insertion, $nu3 us ($sh3%) rebuilding at each event step"
+  fi
 done
-median() { sort -g | awk -v what="$1" '{r[NR] = $1} END {
-  m = (NR % 2) ? r[(NR + 1) / 2] : (r[NR / 2] + r[NR / 2 + 1]) / 2
-  printf "speed-up 1 -> 2 ranks, %s: median %.3f of %d rounds (range %.3f - %.3f)\n", what, m, NR, r[1], r[NR] }'; }
-printf '%s\n' "${ratios[@]}" | median "whole test"
-printf '%s\n' "${step_ratios[@]}" | median "per step"
-grep -E '^(Nlocal|Nghost|Neighs):' cone2.txt | tail -3 | sed 's/^/2 ranks at the end: /' || true
+summary "speed-up 1 -> 2 ranks, whole test" "${ratios[@]}"
+summary "speed-up 1 -> 2 ranks, per step" "${step_ratios[@]}"
+if [ "$lists" = 1 ]; then
+  summary "2 ranks, neighbour time per step, insert / rebuild" "${neigh_ratios[@]}"
+  summary "2 ranks, neighbour share of the loop, insert / rebuild" "${share_ratios[@]}"
+fi
+grep -E '^(Nlocal|Nghost|Neighs):' np2.txt | tail -3 | sed 's/^/2 ranks at the end: /' || true
 /usr/bin/python3 "$here/bench/penetration_balance.py" "particles_np2_N${n}.liggghts" chamber_dense_N${n}.in

@@ -2,7 +2,7 @@
 """Critical states of drained triaxial tests with crushing (examples/fontainebleau/in.triaxial,
 scripts/critical_state_study.sh), the critical state line and plane, for doc/critical_state.md.
 
-    post/critical_state.py [--out DIR] [--window W] FOLDER ...
+    post/critical_state.py [--out DIR] [--window W] [--max-dilatancy D] FOLDER ...
 
 Reads every history_T<sample><N>.csv under the given folders (a test's folder is named
 <sample>_<p0>MPa[_<path>][_s<seed>] inside a folder named after its variant, e.g. rotation0/dense_2MPa;
@@ -22,7 +22,14 @@ each variant with its pre-crushed samples (variant_pre<P>: one reading, gradings
   - the critical state plane e_cs = Gamma_0 - lambda ln(p'/1 kPa) - beta I_G of both samples together,
     and the curved plane e_cs = e_Gamma0 - lambda_c (p'/p_a)^0.7 - beta I_G, with the residuals of each
     test;
-each coefficient with its standard error (a plane over a narrow range of I_G cannot separate beta).
+each coefficient with its standard error (a plane over a narrow range of I_G cannot separate beta);
+and, paired by seed (the seed fixes the sample and the strengths; post/seeds.py's statistics):
+  - each pre-crushed sample against its variant at the same sample, p0 and path: the changes of e_cs,
+    I_G and ln p' at the critical state and beta = -de_cs / dI_G, per seed and as mean +- standard error;
+  - each variant's phi_cs between neighbouring cell pressures that two seeds or more ran.
+--max-dilatancy D leaves the tests whose |dilatancy| at the end exceeds D (still changing volume: not
+at a critical state) out of every fit and pairing; the tables list them and fit.md names them.
+A folder without _s<seed> holds the decks' seed (15485863).
 Writes DIR/critical_states.csv (a row a test), DIR/fit.md (the tables of doc/critical_state.md) and
 the figures DIR/figures/critical_state_e_lnp.png (e against ln p', every test's path and critical
 state, the lines), critical_state_IG_p.png (I_G against p' through compression and shearing, the
@@ -40,6 +47,7 @@ import sys
 if not __package__:  # run as a file (python3 post/critical_state.py): the folder above post/ holds the package
     sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 from post import requires  # noqa: E402
+from post.seeds import resolved, statistics  # noqa: E402
 
 requires("critical_state", "numpy")
 
@@ -49,6 +57,7 @@ KEPT_FOURTEEN = 0.52386  # share of a mother's volume its fourteen fragments kee
 STATE = re.compile(r"^STATE at \S+ MPa: \S+ particles, \S+ events, porosity (\S+),", re.M)
 FOLDER_NAME = re.compile(r"^(dense|loose)_([0-9.]+)MPa(?:_(sigma3|p))?(?:_s([0-9]+))?$")
 P_REF = 1e3  # Pa: ln(p'/1 kPa)
+DECKS_SEED = "15485863"  # in.grains' seed, a test folder's where its name gives none
 
 
 def friction_angle(m):
@@ -69,7 +78,7 @@ def describe(folder):
         return None
     variant = os.path.basename(os.path.dirname(os.path.normpath(folder)))
     return {"variant": variant, "sample": m.group(1), "p0_MPa": float(m.group(2)),
-            "path": m.group(3) or "sigma3", "seed": m.group(4) or ""}
+            "path": m.group(3) or "sigma3", "seed": m.group(4) or DECKS_SEED}
 
 
 def critical_state(h, window):
@@ -284,10 +293,20 @@ def lines_through(members, column):
     return line
 
 
-def fits(tests):
-    """Per group (groups()): the line of each sample and of both, curved lines, and the plane."""
+def at_critical_state(t, max_dilatancy):
+    """Whether a fit takes the test: always without a bound; with one, where its volume has stopped
+    changing to within it (|dilatancy| at the end)."""
+    return max_dilatancy is None or abs(t["dilatancy_end"]) <= max_dilatancy
+
+
+def fits(tests, max_dilatancy=None):
+    """Per group (groups()): the line of each sample and of both, curved lines, and the plane, over
+    the tests at_critical_state()."""
     out = {}
     for variant, group in groups(tests):
+        group = [t for t in group if at_critical_state(t, max_dilatancy)]
+        if not group:
+            continue
         result = {"tests": group, "lines": {}}
         for name, members in (("dense", [t for t in group if t["sample"] == "dense"]),
                               ("loose", [t for t in group if t["sample"] == "loose"]), ("both", group)):
@@ -307,7 +326,88 @@ def fits(tests):
     return out
 
 
-def markdown(tests, fitted, window):
+def by_seed(tests, variant, sample, p0, path, max_dilatancy):
+    """{seed: test} of one setting, the tests a fit takes."""
+    return dict((t["seed"], t) for t in tests if (t["variant"], t["sample"], t["p0_MPa"], t["path"]) ==
+                (variant, sample, p0, path) and at_critical_state(t, max_dilatancy))
+
+
+def paired_gradings(tests, max_dilatancy=None):
+    """Each pre-crushed variant (variant_pre<P>) against its variant at the same sample, p0 and path,
+    over the seeds both ran: (variant, pre-crushed variant, sample, p0, path, seeds, statistics of
+    de_cs, dI_G,cs, d ln p'_cs and beta = -de_cs / dI_G,cs, each seed's beta)."""
+    rows = []
+    for pre in sorted({t["variant"] for t in tests if "_pre" in t["variant"]}):
+        base = pre.split("_pre")[0]
+        for sample, p0, path in sorted({(t["sample"], t["p0_MPa"], t["path"]) for t in tests if t["variant"] == pre}):
+            a = by_seed(tests, base, sample, p0, path, max_dilatancy)
+            b = by_seed(tests, pre, sample, p0, path, max_dilatancy)
+            seeds = sorted(set(a) & set(b))
+            if not seeds:
+                continue
+            de = [b[s]["e_cs"] - a[s]["e_cs"] for s in seeds]
+            dig = [b[s]["IG_cs"] - a[s]["IG_cs"] for s in seeds]
+            dlnp = [math.log(b[s]["p_cs_MPa"] / a[s]["p_cs_MPa"]) for s in seeds]
+            beta = [-x / y for x, y in zip(de, dig)]
+            rows.append((base, pre, sample, p0, path, seeds, statistics(de), statistics(dig), statistics(dlnp),
+                         statistics(beta), beta))
+    return rows
+
+
+def paired_angles(tests, max_dilatancy=None):
+    """phi_cs of each variant, sample and path between neighbouring cell pressures that two seeds or
+    more ran, over their common seeds: (variant, sample, path, p0 low, p0 high, seeds, statistics of
+    the change)."""
+    rows = []
+    for variant, sample, path in sorted({(t["variant"], t["sample"], t["path"]) for t in tests}):
+        levels = {}
+        for p0 in sorted({t["p0_MPa"] for t in tests if (t["variant"], t["sample"], t["path"]) == (variant, sample, path)}):
+            seeds = by_seed(tests, variant, sample, p0, path, max_dilatancy)
+            if len(seeds) >= 2:
+                levels[p0] = seeds
+        pressures = sorted(levels)
+        for lo, hi in zip(pressures, pressures[1:]):
+            seeds = sorted(set(levels[lo]) & set(levels[hi]))
+            if len(seeds) >= 2:
+                rows.append((variant, sample, path, lo, hi, seeds,
+                             statistics([levels[hi][s]["phi_cs"] - levels[lo][s]["phi_cs"] for s in seeds])))
+    return rows
+
+
+def pm(stats, digits):
+    """mean +- standard error of statistics()."""
+    return "%+.*f +- %.*f" % (digits, stats[1], digits, stats[3])
+
+
+def paired_markdown(tests, max_dilatancy):
+    lines = []
+    gradings = paired_gradings(tests, max_dilatancy)
+    if gradings:
+        lines += ["", "### Gradings at one p', paired by seed: beta = -de_cs / dI_G,cs", "",
+                  "| variant | pre-crushed | sample | p'_0 (MPa) | path | seeds | de_cs | dI_G,cs | d ln p'_cs | "
+                  "beta of each seed | beta |", "|---|---|---|---|---|---|---|---|---|---|---|"]
+        for base, pre, sample, p0, path, seeds, de, dig, dlnp, beta, each in gradings:
+            lines.append("| %s | %s | %s | %g | %s | %d | %s | %s | %s | %s | %.3f +- %.3f |"
+                         % (base, pre, sample, p0, path, len(seeds), pm(de, 4), pm(dig, 4), pm(dlnp, 4),
+                            ", ".join("%.3f" % x for x in each), beta[1], beta[3]))
+    angles = paired_angles(tests, max_dilatancy)
+    if angles:
+        lines += ["", "### phi_cs between cell pressures, paired by seed", "",
+                  "| variant | sample | path | p'_0 from (MPa) | to | seeds | change of phi_cs (deg) | resolved at 2 se |",
+                  "|---|---|---|---|---|---|---|---|"]
+        for variant, sample, path, lo, hi, seeds, d in angles:
+            lines.append("| %s | %s | %s | %g | %g | %d | %s | %s |"
+                         % (variant, sample, path, lo, hi, len(seeds), pm(d, 2), resolved(d[1], d[3])))
+    if max_dilatancy is not None:
+        out = [t for t in tests if not at_critical_state(t, max_dilatancy)]
+        lines += ["", "Left out of every fit and pairing (|dilatancy| at the end above %g): %s"
+                  % (max_dilatancy, ", ".join("%s %s %g MPa seed %s (%.3f)" % (t["variant"], t["sample"], t["p0_MPa"],
+                                                                               t["seed"], t["dilatancy_end"]) for t in out)
+                     if out else "none")]
+    return lines
+
+
+def markdown(tests, fitted, window, max_dilatancy=None):
     lines = ["### Critical states (mean over the last %g of axial strain)" % window, "",
              "| variant | sample | p'_0 (MPa) | path | seed | e_0 | I_G,0 | peak q/p (at eps_a) | phi_peak | "
              "p'_cs (MPa) | e_cs | q/p cs | phi_cs | I_G,cs | dilatancy at end | overlaps / solid | "
@@ -369,6 +469,7 @@ def markdown(tests, fitted, window):
                 lines.append("| %s | %s | %s | %g | %.4f | %.4f | %.4f | %+.4f | %.4f | %+.4f |"
                              % (variant, t["variant"], t["sample"], t["p0_MPa"], t["IG_cs"], t["e_cs"], t["e_cs"] - r, r,
                                 t["e_cs"] - rc, rc))
+    lines += paired_markdown(tests, max_dilatancy)
     return "\n".join(lines) + "\n"
 
 
@@ -476,6 +577,8 @@ def main(argv):
     parser.add_argument("--out", default=".", help="folder for critical_states.csv, fit.md and figures/")
     parser.add_argument("--window", type=float, default=0.05, help="axial strain at the end over which the "
                         "critical state is averaged (0.05)")
+    parser.add_argument("--max-dilatancy", type=float, default=None, help="leave the tests whose |dilatancy| at "
+                        "the end exceeds this out of the fits and pairings (default: none left out)")
     parser.add_argument("--no-figures", action="store_true")
     a = parser.parse_args(argv)
     tests = collect(a.folders, a.window)
@@ -484,8 +587,8 @@ def main(argv):
                  % " ".join(a.folders))
     os.makedirs(a.out, exist_ok=True)
     write_csv(tests, os.path.join(a.out, "critical_states.csv"))
-    fitted = fits(tests)
-    text = markdown(tests, fitted, a.window)
+    fitted = fits(tests, a.max_dilatancy)
+    text = markdown(tests, fitted, a.window, a.max_dilatancy)
     with open(os.path.join(a.out, "fit.md"), "w") as f:
         f.write(text)
     print(text)

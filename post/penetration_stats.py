@@ -37,7 +37,8 @@ import sys
 
 if not __package__:  # run as a file (python3 post/penetration_stats.py): the folder above post/ holds the package
     sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-from post.seeds import number, statistics  # noqa: E402,F401  (the studies' one implementation; cpt_interpretation.py uses it here)
+from post.seeds import number, statistics  # noqa: E402,F401
+from post.seeds import resolved as is_resolved  # noqa: E402  (the studies' one implementation; "one seed" without an se)
 
 SETTING = ["density", "N", "crushing", "v", "width", "ranks", "distribution", "sigma_v", "fragment_density", "depth",
            "tip_shape", "sigma_lim0", "neighbor_style", "extra"]
@@ -165,14 +166,14 @@ def print_changes(table, seeded, field):
         for x, y in (zip(members, members[1:]) if numeric else ((members[0], m) for m in members[1:])):
             (nx, mx, _, ex), (ny, my, _, ey) = table[x]["q_c_MPa"], table[y]["q_c_MPa"]
             se = math.sqrt(ex ** 2 + ey ** 2)
-            resolved = "yes" if math.isfinite(se) and abs(my - mx) > 2 * se else "no"
+            resolved = is_resolved(my - mx, se)
             print("%s: %s %s -> %s: %.2f -> %.2f MPa, change %+.2f +- %.2f (%+.0f%%), resolved: %s (%d and %d seeds)"
                   % (label(x, (field,)), field, x[at], y[at], mx, my, my - mx, se, 100 * (my / mx - 1), resolved, nx, ny))
             paired = paired_change(seeded[x], seeded[y])
             if paired:
                 n, mean, _, se = paired
                 print("    paired by seed (the same chamber and strengths): change %+.2f +- %.2f, resolved: %s (%d seeds)"
-                      % (mean, se, "yes" if math.isfinite(se) and abs(mean) > 2 * se else "no", n))
+                      % (mean, se, is_resolved(mean, se), n))
 
 
 def fits(table, seeded, field, power=False):
@@ -193,7 +194,7 @@ def print_fit(table, seeded, field):
     at = SETTING.index(field)
     print("\nq_c against log2 %s (the others fixed), one intercept per seed: slope, its standard error" % field)
     for members, runs, seeds, slope, se in fits(table, seeded, field):
-        resolved = "yes" if math.isfinite(se) and abs(slope) > 2 * se else "no"
+        resolved = is_resolved(slope, se)
         print("%s: %s = %s: %+.3f +- %.3f MPa per doubling of %s (%+.3f +- %.3f per halving), resolved: %s"
               " (%d runs, %d seeds)" % (label(members[0], (field,)), field, ", ".join(m[at] for m in members),
                                         slope, se, field, -slope, se, resolved, runs, seeds))
@@ -232,7 +233,7 @@ def print_local_powers(seeded, members, at):
             continue
         n, mean, _, se = statistics([steps[k + 1][seed] - steps[k][seed] for seed in common])
         print("    change from the step to %s to the next: %+.3f +- %.3f (paired, %d seeds), resolved: %s"
-              % (members[k + 1][at], mean, se, n, "yes" if abs(mean) > 2 * se else "no"))
+              % (members[k + 1][at], mean, se, n, is_resolved(mean, se)))
 
 
 def picked(rows, pattern, field):
@@ -255,12 +256,12 @@ def print_ratio(rows, first, second, field):
     r, se = ratio(statistics(list(a.values())), statistics(list(b.values())))
     print("\n%s: %s over %s" % (field, second, first))
     print("  ratio of the means %.3f +- %.3f (unpaired, %d and %d seeds), resolved from 1: %s"
-          % (r, se, len(a), len(b), "yes" if abs(r - 1) > 2 * se else "no"))
+          % (r, se, len(a), len(b), is_resolved(r - 1, se)))
     common = [seed for seed in a if seed in b]
     if len(common) > 1:
         n, mean, _, se = statistics([b[seed] / a[seed] for seed in common])
         print("  paired by seed: %.3f +- %.3f (%d seeds), resolved from 1: %s"
-              % (mean, se, n, "yes" if abs(mean - 1) > 2 * se else "no"))
+              % (mean, se, n, is_resolved(mean - 1, se)))
 
 
 def versus(rows, first, second, field):

@@ -185,25 +185,42 @@ def write_fixture(folder, cell_mpa, ig0, e_shift=0.0):
 
 def case_fit_precrushed(liggghts, work):
     """post/critical_state.py groups a variant with its pre-crushed samples (variant_pre<P>): dense
-    samples of normal at 2 and 8 MPa (I_G 0.78 + 0.01 ln p') and of normal_pre50 at the same p' with
-    I_G 0.90 + 0.01 ln p', all on the known plane: the group "normal + pre-crushed" (4 tests) recovers
-    beta, which normal's own 2 tests (one grading per p') cannot give."""
+    samples of normal at 2 MPa (seeds 11 and 12: I_G 0.78 and 0.79 + 0.01 ln p') and 8 MPa (the decks'
+    seed) and of normal_pre50 at the same p' with I_G 0.90 and 0.92 + 0.01 ln p', all on the known
+    plane: the group "normal + pre-crushed" (6 tests) recovers beta, which normal's own 3 tests cannot
+    give; paired by seed, each seed's -de_cs / dI_G at 2 MPa is beta; --max-dilatancy below every
+    test's leaves them all out of the fits."""
     del liggghts
     study = os.path.join(work, "study")
     if os.path.isdir(study):
         shutil.rmtree(study)
     for variant, ig0 in (("normal", 0.78), ("normal_pre50", 0.90)):
-        for p in (2.0, 8.0):
-            write_fixture(os.path.join(study, variant, "dense_%gMPa" % p), p, ig0)
-    out = subprocess.run(["/usr/bin/python3", FIT, "--out", os.path.join(work, "fit"), "--no-figures", study],
-                         stdout=subprocess.PIPE, stderr=subprocess.STDOUT, universal_newlines=True)
-    check(out.returncode == 0, "post/critical_state.py ran:\n" + out.stdout[-2000:])
-    fit = open(os.path.join(work, "fit", "fit.md")).read()
-    plane = re.search(r"^\| normal \+ pre-crushed \| 4 \| (\S+) \| (\S+) \| (\S+) \|", fit, re.M)
+        write_fixture(os.path.join(study, variant, "dense_2MPa_s11"), 2.0, ig0)
+        write_fixture(os.path.join(study, variant, "dense_2MPa_s12"), 2.0, ig0 + (0.01 if variant == "normal" else 0.02))
+        write_fixture(os.path.join(study, variant, "dense_8MPa"), 8.0, ig0)
+
+    def fit(*options):
+        out = subprocess.run(["/usr/bin/python3", FIT, "--out", os.path.join(work, "fit"), "--no-figures"] + list(options)
+                             + [study], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, universal_newlines=True)
+        check(out.returncode == 0, "post/critical_state.py ran:\n" + out.stdout[-2000:])
+        return open(os.path.join(work, "fit", "fit.md")).read()
+
+    text = fit()
+    plane = re.search(r"^\| normal \+ pre-crushed \| 6 \| (\S+) \| (\S+) \| (\S+) \|", text, re.M)
     check(plane is not None and abs(float(plane.group(3)) - BETA) < 1e-3 and abs(float(plane.group(2)) - LAMBDA) < 1e-4,
           "the pre-crushed family's plane: lambda %s, beta %s (built with %g, %g)"
           % (plane and plane.group(2), plane and plane.group(3), LAMBDA, BETA))
-    check(re.search(r"^\| normal \| 2 \|", fit, re.M) is None, "no plane from normal's own two tests")
+    check(re.search(r"^\| normal \| 3 \|", text, re.M) is None, "no plane from normal's own three tests")
+    paired = re.search(r"^\| normal \| normal_pre50 \| dense \| 2 \| sigma3 \| 2 \| .* \| (\S+) \+- (\S+) \|$", text, re.M)
+    check(paired is not None and abs(float(paired.group(1)) - BETA) < 1e-3,
+          "beta paired by seed at 2 MPa: %s (built with %g)" % (paired and paired.group(1), BETA))
+    with open(os.path.join(work, "fit", "critical_states.csv")) as f:
+        seeds = sorted({(r["p0_MPa"], r["seed"]) for r in csv.DictReader(f)})
+    check(seeds == [("2", "11"), ("2", "12"), ("8", "15485863")],
+          "seeds named by the folders, the decks' where none is: %s" % seeds)
+    text = fit("--max-dilatancy", "-1")
+    check(re.search(r"^\| normal \+ pre-crushed \|", text, re.M) is None and "Left out of every fit" in text
+          and text.count(" seed ") >= 6, "--max-dilatancy -1 leaves every test out of the fits")
 
 
 def case_fit_fixture(liggghts, work):
