@@ -14,7 +14,8 @@ stress_LABEL_N<N>.liggghts (x y z and compute stress/atom, post/ring_stress.py's
 and penetration_LABEL_N<N>.csv (the tip's height at each step, interpolated). --dr and --dh are in
 D_c. The rings are quarter rings in the quarter chamber and whole ones in the whole chamber (sand on
 both sides of the axis). Writes, in the first folder, OUT_rings.csv (r/R, h/R, particles, sigma_rr, sigma_tt, sigma_zz, sigma_rz in Pa, the
-snapshots' mean, over those with particles in the ring), OUT_shaft.csv (h/R and sigma_r' in the first ring outside the shaft), OUT_maps.png
+snapshots' mean, over those whose ring holds particles and lies wholly below the sand's surface: the
+surface is the history's first tip height plus its depth), OUT_shaft.csv (h/R and sigma_r' in the first ring outside the shaft), OUT_maps.png
 and OUT_shaft.png, and prints the shaft's profile.
 """
 import argparse
@@ -40,9 +41,10 @@ from post.ring_stress import chamber_sector, read_snapshots, ring_stresses, stre
 
 def averaged_rings(snapshots, Dc, start, dr, dh):
     """{(i, k): [particles, rr, tt, zz, rz]}: each snapshot's rings in the tip's frame (h = z - z_tip),
-    averaged over the snapshots whose tip is at least start D_c deep and which have particles in the
-    ring (a ring above the sand's surface early on is not a ring of zero stress); and the number of
-    snapshots used. snapshots: (step, columns, rows, the test's history, its surface's height)."""
+    averaged over the snapshots whose tip is at least start D_c deep and whose ring lies wholly
+    below the sand's surface (a ring that reaches above it holds sand in part of its volume, and
+    its stress, averaged over the whole, would read low); and the number of snapshots used.
+    snapshots: (step, columns, rows, the test's history, its surface's height)."""
     total, seen, used = {}, {}, 0
     for step, columns, rows, history, surface in snapshots:
         tip = tip_at(history, step)
@@ -52,6 +54,8 @@ def averaged_rings(snapshots, Dc, start, dr, dh):
         particles = [(x, y, z - tip, s) for x, y, z, s in stress_particles(columns, rows)]
         sector = chamber_sector([q[0] for q in particles], [q[1] for q in particles])
         for key, values in ring_stresses(particles, dr, dh, sector=sector).items():
+            if tip + (key[1] + 1) * dh > surface + 1e-9 * Dc:
+                continue
             entry = total.setdefault(key, [0.0] * 5)
             seen[key] = seen.get(key, 0) + 1
             for m, value in enumerate(values):

@@ -95,9 +95,11 @@ def case_pile_shaft_profile(liggghts, work):
     q / 2, sigma_zz = 2 q. Averaged in the tip's frame, the shaft's ring (r 0.2 - 0.3) gives
     sigma_r' = q (1 + h / R) at each ring's mid-height h (the field is linear in h), within the
     grid's 3%, the ring at h/R 1.75, which the first snapshot's field does not reach, too; a field
-    read in the box's frame instead would smear it by the tip's travel."""
+    read in the box's frame instead would smear it by the tip's travel. With the history's surface
+    at 0.55 instead of the field's top (0.6), the rings that reach above it are left out: h/R 1.75
+    in both snapshots, 1.25 in the first (a ring half in the sand would read its stress low)."""
     q, Dc, cells, dz = 1e5, 0.4, 60, 0.02
-    tips, surface = {100: 0.3, 200: 0.2}, 0.5
+    tips, surface = {100: 0.3, 200: 0.2}, 0.6
     cell = R / cells
     dump = os.path.join(work, "stress_pile_N1.liggghts")
     with open(dump, "w") as f:
@@ -136,6 +138,17 @@ def case_pile_shaft_profile(liggghts, work):
     check(len(full) == 4 and worst < 0.03 and all(abs(float(r["sigma_theta"]) / (q / 2) - 1) < 0.03 for r in full),
           "sigma_r' = q (1 + h/R) on the shaft at h/R = %s, to %.2g%%; sigma_theta = q/2"
           % (", ".join(r["h_over_R"] for r in full), 100 * worst))
+    with open(os.path.join(work, "penetration_pile_N1.csv"), "w") as f:
+        f.write("step,tip_z,depth\n")
+        for step, tip in sorted(tips.items()):
+            f.write("%d,%g,%g\n" % (step, tip, 0.55 - tip))
+    pile_stress.main(["--label", "pile", "--N", "1", "--Dc", str(Dc), "--dir", work, "--from", "0", "--dr", "0.25",
+                      "--dh", "0.25"])
+    rows = list(csv.DictReader(open(os.path.join(work, "pile_shaft.csv"))))
+    worst = max(abs(float(r["sigma_r"]) / (q * (1 + float(r["h_over_R"]))) - 1) for r in rows)
+    check([r["h_over_R"] for r in rows] == ["0.25", "0.75", "1.25"] and worst < 0.03,
+          "with the surface at 0.55 the rings reaching above it are left out: h/R %s, to %.2g%%"
+          % (", ".join(r["h_over_R"] for r in rows), 100 * worst))
 
 
 if __name__ == "__main__":
