@@ -5,7 +5,8 @@
 #   clipped    the decks' normal_clipped_originals (the Table 3 reading: an original grain's negative
 #              draw clipped to zero, so about a sixth of the grains break at the first load)
 #   normal     the normal truncated by redrawing (no zero-strength grain), sigma_lim0 5e9 Pa
-#   matched    the same normal with sigma_lim0 SIGMA_LIM0_MATCHED (Pa): the value that brings O-2's
+#   matched    the same normal with sigma_lim0 SIGMA_LIM0_MATCHED (Pa), in the folder
+#              matched_<sigma_lim0 in GPa>GPa (matched_0.88GPa): the value that brings O-2's
 #              yield stress back to the clipped reading's, found by trials with this script
 #              (TESTS=O2 SEEDS=... SIGMA_LIM0_MATCHED=... ... matched) and post/compression_seeds.py's
 #              yield_MPa; run only when SIGMA_LIM0_MATCHED is given
@@ -36,7 +37,9 @@ for seed in ${SEEDS:-15485863 179424673 275604541 373587883 1299709}; do
     esac
     specs=()
     for t in ${TESTS:-O2 I2}; do specs+=("$t:$seed"); done
-    EXTRA_VARS="$vars" PLOT=true bash "$here/scripts/fontainebleau_runs.sh" "$out/$reading" "${specs[@]}"
+    folder=$reading
+    [ "$reading" != matched ] || folder=matched_$(awk -v s="$matched" 'BEGIN {printf "%g", s / 1e9}')GPa
+    EXTRA_VARS="$vars" PLOT=true bash "$here/scripts/fontainebleau_runs.sh" "$out/$folder" "${specs[@]}"
   done
 done
 /usr/bin/python3 "$here/post/compression_seeds.py" --by-folder --reference folder=clipped --name readings \
