@@ -172,7 +172,8 @@ done
 # 200 and 400, crushing in the zone, beside the 40 D_c tests), pristine_pile (the closed-ended pile in the
 # pristine chamber at 5, crushing in the zone), pristine_w40_400kPa (the dense 400 kPa chambers 40 D_c
 # wide: the cone's tests, the uncrushable reference and the pile, each paired by chamber),
-# pristine_pile_w40 (the pile in the dense 100 kPa chambers 40 D_c wide). Seeds 1 - 3
+# pristine_pile_w40 (the pile in the dense 100 kPa chambers 40 D_c wide), pristine_reference_w40
+# (the uncrushable reference at 100 kPa in pristine_base's chambers 5 D_c below the tip). Seeds 1 - 3
 # each;
 # everywhere_refined, crushing everywhere in the dense chamber at 100 kPa (the coarse zones' events
 # too), seed 1 (refined_N34_everywhere_s2 and _s3 run by name).
@@ -238,6 +239,10 @@ for k in 1 2 3; do
   spec[refined_N34_pristine_w40_0_400kPa_s$k]=dense:34:0:$v:40:2:normal:4e5:$seed:scaled:4::refine=1,distribution=normal
   spec[refined_N34_pristine_w40_pile_400kPa_s$k]=dense:34:region:$v:40:2:normal:4e5:$seed:scaled:4:tip_shape=flat,stress_every=0.5:refine=1,distribution=normal
   group[pristine_w40_400kPa]+=" refined_N34_pristine_w40_dense_400kPa_s$k refined_N34_pristine_w40_0_400kPa_s$k refined_N34_pristine_w40_pile_400kPa_s$k"
+  # the uncrushable reference at 100 kPa in the base study's chambers (5 D_c below the final tip),
+  # paired by chamber with their cone's tests
+  spec[refined_N34_pristine_w40_below5_0_s$k]=dense:34:0:$v:40:2:$pristine,below=5
+  group[pristine_reference_w40]+=" refined_N34_pristine_w40_below5_s$k refined_N34_pristine_w40_below5_0_s$k"
   spec[refined_N34_pristine_w40_pile_s$k]=dense:34:region:$v:40:2:normal:1e5:$seed:scaled:4:tip_shape=flat,stress_every=0.5:refine=1,distribution=normal
   group[pristine_pile_w40]+=" refined_N34_pristine_w40_pile_s$k"
   spec[refined_N34_pristine_whole_s$k]=dense:34:region:$v:10:2:$pristine,sector=360
