@@ -17,8 +17,7 @@ liggghts=${LIGGGHTS:-$here/build/liggghts}
 source "$here/scripts/mpi_env.sh"
 source "$here/bench/penetration_work.sh"
 vars=(-var N "$n" -var refine 1 -var width "$width" -var depth "$depth" -var v 2 -var vtk 0 -var checkpoint_every 0)
-IFS=, read -ra scene <<< "${SCENE:-}"
-for kv in ${scene[@]+"${scene[@]}"}; do vars+=(-var "${kv%%=*}" "${kv#*=}"); done
+add_scene_vars
 mpirun -np 2 "$liggghts" -in in.chamber "${vars[@]}" -log chamber.log > chamber.txt 2>&1 || { tail -5 chamber.txt; exit 1; }
 grep '^CHAMBER .* N = ' chamber.txt
 mpirun -np 2 "$liggghts" -in in.cone "${vars[@]}" -var crushing region -var label bench -log cone.log > cone.txt 2>&1 \

@@ -32,8 +32,7 @@ source "$here/scripts/mpi_env.sh"
 source "$here/bench/rounds.sh"
 source "$here/bench/penetration_work.sh"
 vars=(-var N "$n" -var width "$width" -var depth "$depth" -var v "${V:-2}" -var vtk 0 -var checkpoint_every 0)
-IFS=, read -ra scene <<< "${SCENE:-}"   # name=value pairs; a value may hold spaces (grid=1 1 *)
-for kv in ${scene[@]+"${scene[@]}"}; do vars+=(-var "${kv%%=*}" "${kv#*=}"); done
+add_scene_vars
 mpirun -np 2 "$liggghts" -in in.chamber "${vars[@]}" -log chamber.log > chamber.txt 2>&1 || { tail -5 chamber.txt; exit 1; }
 grep '^CHAMBER .* N = ' chamber.txt
 

@@ -123,28 +123,26 @@ def case_pile_shaft_profile(liggghts, work):
                     % (step, len(points)))
             for m, (x, y, z, s) in enumerate(points):
                 f.write("%d %.12g %.12g %.12g 0.001 %s\n" % (m + 1, x, y, z, " ".join("%.12g" % v for v in s)))
-    with open(os.path.join(work, "penetration_pile_N1.csv"), "w") as f:
-        f.write("step,tip_z,depth\n")
-        for step, tip in sorted(tips.items()):
-            f.write("%d,%g,%g\n" % (step, tip, surface - tip))
     import pile_stress  # noqa: E402
-    pile_stress.main(["--label", "pile", "--N", "1", "--Dc", str(Dc), "--dir", work, "--from", "0", "--dr", "0.25",
-                      "--dh", "0.25"])
-    rows = list(csv.DictReader(open(os.path.join(work, "pile_shaft.csv"))))
+
+    def shaft(top):
+        """pile_stress's shaft profile with the history's sand surface at top."""
+        with open(os.path.join(work, "penetration_pile_N1.csv"), "w") as f:
+            f.write("step,tip_z,depth\n")
+            for step, tip in sorted(tips.items()):
+                f.write("%d,%g,%g\n" % (step, tip, top - tip))
+        pile_stress.main(["--label", "pile", "--N", "1", "--Dc", str(Dc), "--dir", work, "--from", "0", "--dr", "0.25",
+                          "--dh", "0.25"])
+        return list(csv.DictReader(open(os.path.join(work, "pile_shaft.csv"))))
+
     # h/R 0.25 - 1.25 from both snapshots; 1.75 from the second alone (the field ends at z = 0.6):
     # a ring is averaged over the snapshots that hold it
-    full = rows
+    full = shaft(surface)
     worst = max(abs(float(r["sigma_r"]) / (q * (1 + float(r["h_over_R"]))) - 1) for r in full)
     check(len(full) == 4 and worst < 0.03 and all(abs(float(r["sigma_theta"]) / (q / 2) - 1) < 0.03 for r in full),
           "sigma_r' = q (1 + h/R) on the shaft at h/R = %s, to %.2g%%; sigma_theta = q/2"
           % (", ".join(r["h_over_R"] for r in full), 100 * worst))
-    with open(os.path.join(work, "penetration_pile_N1.csv"), "w") as f:
-        f.write("step,tip_z,depth\n")
-        for step, tip in sorted(tips.items()):
-            f.write("%d,%g,%g\n" % (step, tip, 0.55 - tip))
-    pile_stress.main(["--label", "pile", "--N", "1", "--Dc", str(Dc), "--dir", work, "--from", "0", "--dr", "0.25",
-                      "--dh", "0.25"])
-    rows = list(csv.DictReader(open(os.path.join(work, "pile_shaft.csv"))))
+    rows = shaft(0.55)
     worst = max(abs(float(r["sigma_r"]) / (q * (1 + float(r["h_over_R"]))) - 1) for r in rows)
     check([r["h_over_R"] for r in rows] == ["0.25", "0.75", "1.25"] and worst < 0.03,
           "with the surface at 0.55 the rings reaching above it are left out: h/R %s, to %.2g%%"
