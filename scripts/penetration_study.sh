@@ -173,7 +173,9 @@ done
 # pristine chamber at 5, crushing in the zone), pristine_w40_400kPa (the dense 400 kPa chambers 40 D_c
 # wide: the cone's tests, the uncrushable reference and the pile, each paired by chamber),
 # pristine_pile_w40 (the pile in the dense 100 kPa chambers 40 D_c wide), pristine_reference_w40
-# (the uncrushable reference at 100 kPa in pristine_base's chambers 5 D_c below the tip). Seeds 1 - 3
+# (the uncrushable reference at 100 kPa in pristine_base's chambers 5 D_c below the tip),
+# pristine_weak_w40 (grains ten times weaker, sigma_lim0 = 0.5 GPa, in the pristine chamber 40 D_c
+# wide at 100 kPa: crushing in the zone and none, paired by chamber). Seeds 1 - 3
 # each;
 # everywhere_refined, crushing everywhere in the dense chamber at 100 kPa (the coarse zones' events
 # too), seed 1 (refined_N34_everywhere_s2 and _s3 run by name).
@@ -243,6 +245,12 @@ for k in 1 2 3; do
   # paired by chamber with their cone's tests
   spec[refined_N34_pristine_w40_below5_0_s$k]=dense:34:0:$v:40:2:$pristine,below=5
   group[pristine_reference_w40]+=" refined_N34_pristine_w40_below5_s$k refined_N34_pristine_w40_below5_0_s$k"
+  # the weak sand (sigma_lim0 = 0.5 GPa, chamber and test) in the pristine chamber 40 D_c wide at
+  # 100 kPa: crushing in the zone and none, paired by chamber
+  for c in region 0; do
+    spec[refined_N34_pristine_w40_weak_${c}_s$k]=dense:34:$c:$v:40:2:$pristine,sigma_lim0=5e8
+    group[pristine_weak_w40]+=" refined_N34_pristine_w40_weak_${c}_s$k"
+  done
   spec[refined_N34_pristine_w40_pile_s$k]=dense:34:region:$v:40:2:normal:1e5:$seed:scaled:4:tip_shape=flat,stress_every=0.5:refine=1,distribution=normal
   group[pristine_pile_w40]+=" refined_N34_pristine_w40_pile_s$k"
   spec[refined_N34_pristine_whole_s$k]=dense:34:region:$v:10:2:$pristine,sector=360
