@@ -176,7 +176,7 @@ done
 # (the uncrushable reference at 100 kPa in pristine_base's chambers 5 D_c below the tip),
 # pristine_weak_w40 (grains ten times weaker, sigma_lim0 = 0.5 GPa, in the pristine chamber 40 D_c
 # wide at 100 kPa: crushing in the zone and none, paired by chamber; pristine_weak_w40_everywhere:
-# crushing everywhere in seed 1's chamber). Seeds 1 - 3
+# crushing everywhere in the same chambers). Seeds 1 - 3
 # each;
 # everywhere_refined, crushing everywhere in the dense chamber at 100 kPa (the coarse zones' events
 # too), seed 1 (refined_N34_everywhere_s2 and _s3 run by name).
@@ -252,9 +252,9 @@ for k in 1 2 3; do
     spec[refined_N34_pristine_w40_weak_${c}_s$k]=dense:34:$c:$v:40:2:$pristine,sigma_lim0=5e8
     group[pristine_weak_w40]+=" refined_N34_pristine_w40_weak_${c}_s$k"
   done
-  # and crushing everywhere in the same chamber (what the zone leaves out), seed 1
+  # and crushing everywhere in the same chambers (what the zone leaves out)
   spec[refined_N34_pristine_w40_weak_1_s$k]=dense:34:1:$v:40:2:$pristine,sigma_lim0=5e8
-  [ "$k" -gt 1 ] || group[pristine_weak_w40_everywhere]+=" refined_N34_pristine_w40_weak_1_s$k"
+  group[pristine_weak_w40_everywhere]+=" refined_N34_pristine_w40_weak_1_s$k"
   spec[refined_N34_pristine_w40_pile_s$k]=dense:34:region:$v:40:2:normal:1e5:$seed:scaled:4:tip_shape=flat,stress_every=0.5:refine=1,distribution=normal
   group[pristine_pile_w40]+=" refined_N34_pristine_w40_pile_s$k"
   spec[refined_N34_pristine_whole_s$k]=dense:34:region:$v:10:2:$pristine,sector=360
