@@ -14,6 +14,8 @@
 #include "atom.h"
 #include "atom_vec.h"
 #include "comm.h"
+#include "fix_crush_driven_grains.h"
+#include "fix_crush_family_check.h"
 #include "fix_crush_list_insertion.h"
 #include "crush_breakage_limit.h"
 #include "crush_check_bound.h"
@@ -81,7 +83,7 @@ FixCrush::FixCrush(LAMMPS *lmp, int narg, char **arg) :
   settings_(parse(this, error, comm->me, narg, arg)),
   strength_(settings_.distribution, settings_.sigma_lim0, settings_.cv, settings_.weibull_m, settings_.seed),
   nfrag_(static_cast<int>(crush::fragment_layout(settings_.layout, 1.0).size())),
-  region_(NULL), fix_data_(NULL), data_id_(NULL), fix_true_density_(NULL), true_density_id_(NULL), fix_scale_(NULL), limit_factor_(NULL), irregular_(NULL), list_insertion_(NULL), inserting_(false), inserted_steps_(0), log_(NULL),
+  region_(NULL), fix_data_(NULL), driven_(NULL), family_check_(NULL), data_id_(NULL), fix_true_density_(NULL), true_density_id_(NULL), fix_scale_(NULL), limit_factor_(NULL), irregular_(NULL), list_insertion_(NULL), inserting_(false), inserted_steps_(0), log_(NULL),
   events_total_(0), removed_volume_(0.0), outflow_volume_(0.0), outflow_particles_(0), outflow_reported_(false),
   max_ratio_(0.0), local_max_ratio_(0.0), max_ratio_step_(-1),
   smallest_fragment_size_(0.0), initial_largest_size_(0.0), next_tag_(1), replace_seconds_(0.0),
@@ -110,6 +112,8 @@ FixCrush::FixCrush(LAMMPS *lmp, int narg, char **arg) :
 
   irregular_ = new Irregular(lmp);
   list_insertion_ = new CrushListInsertion(lmp);
+  driven_ = new CrushDrivenGrains(lmp);
+  family_check_ = new CrushFamilyCheck(lmp);
   memory->create(limit_factor_, atom->ntypes + 1, atom->ntypes + 1, "crush:limit_factor");
   recorder_.limit_factor = limit_factor_;
   recorder_.total_force = settings_.total_force;
@@ -158,6 +162,8 @@ FixCrush::~FixCrush()
   if (log_) fclose(log_);
   delete irregular_;
   delete list_insertion_;
+  delete driven_;
+  delete family_check_;
   if (neighbor->insertion_handler == this) neighbor->insertion_handler = NULL;
   memory->destroy(limit_factor_);
   if (data_id_ && modify->find_fix(data_id_) >= 0) modify->delete_fix(data_id_);
@@ -192,8 +198,7 @@ void FixCrush::init()
   check_contact_models();
   check_materials();
   check_particles();
-  find_bodies();
-  check_bodies();
+  driven_->find(id, groupbit);  // before find_inherited_state(): it names the driving properties
   find_true_density();
   find_scale();
   check_scales();  // before the time-step check below reads the smallest N; again at each reneighboring
@@ -216,10 +221,11 @@ void FixCrush::init()
   }
 }
 
-// Only grains inside the region may break (keyword region): a scene crushes where it needs to.
+// Only grains inside the region may break (keyword region): a scene crushes where it needs to. A
+// grain an insertion still carries has no free grain's forces: it waits for its release.
 bool FixCrush::may_break(int i) const
 {
-  if (!breakable(i)) return false;
+  if (!breakable(i) || driven_->held(i)) return false;
   const double *x = atom->x[i];
   return !region_ || region_->match(x[0], x[1], x[2]);
 }
@@ -407,6 +413,7 @@ void FixCrush::setup_pre_force(int vflag)
       if (atom->mask[i] & groupbit) dmax = std::max(dmax, 2.0 * atom->radius[i] / scale_of(i));
     MPI_Allreduce(&dmax, &initial_largest_size_, 1, MPI_DOUBLE, MPI_MAX, world);
   }
+  family_check_->check(id, true);  // commands between runs may have moved fragments too
   pre_force(vflag);
 }
 
@@ -417,6 +424,7 @@ void FixCrush::pre_force(int)
   if (!initialized_)
     error->all(FLERR, "fix crush was defined after the last full run setup ('run ... pre no'): run once "
                       "with 'pre yes' (or 'run 0') after defining it");
+  family_check_->check(id, false);
   const bool renumbered = refresh_needed_ || neighbor->atoms_added(update->ntimestep);
   if (renumbered) {
     refresh_recorder();

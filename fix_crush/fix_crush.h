@@ -8,7 +8,8 @@
    reached their limit, agrees on them across processors (sorted by tag, so fragment tags and
    strengths never depend on the decomposition), logs them, and schedules a reneighboring;
    pre_exchange() of the next step replaces each by its fragments (fix_crush_replacement.cpp: the
-   fragments, what they inherit from their mother, the books), or, for grains away from every
+   fragments, what they inherit from their mother, the books; the grains that other fixes drive,
+   fix_crush_driven_grains.h), or, for grains away from every
    boundary, insert_without_rebuild() replaces them in place without one
    (fix_crush_list_insertion.h), and counts the grains that leave a
    fixed box (fix_crush_outflow.cpp: 'thermo_modify lost'). With 'scale_atom' each particle carries
@@ -126,6 +127,7 @@ class FixCrush : public Fix, public NeighborInsertion {
                         double &smallest);
   std::vector<std::pair<std::size_t, int>> owned_mothers() const;
   void check_books(double added, double replaced) const;
+  void remember_families(tagint first) const;
   void check_unique_tags() const;
   tagint largest_tag() const;
   bool may_break(int i) const;
@@ -139,10 +141,6 @@ class FixCrush : public Fix, public NeighborInsertion {
     Inheritance rule;
   };
   void find_inherited_state();
-  void find_bodies();
-  const char *body_fix_of(int i) const;
-  void check_bodies() const;
-  void body_error(tagint tag, const char *body) const;
   void inherit_state(int mother, int fragment, double mass_share) const;
   // fragment_density scaled: every particle's true density (fix_crush_density.cpp)
   void create_true_density();
@@ -163,7 +161,9 @@ class FixCrush : public Fix, public NeighborInsertion {
   class Region *region_;             // keyword region (NULL: everywhere)
   class FixPropertyAtom *fix_data_;  // per atom: sigma_lim (Pa), generation, last F_n/F_lim
   std::vector<InheritedState> inherited_;  // every other fix property/atom, with its rule
-  std::vector<class Fix *> body_fixes_;    // fix multisphere and fix rigid: their grains cannot break
+  std::vector<class Fix *> copied_arrays_;  // per-atom arrays without defaults for a new atom: copied
+  class CrushDrivenGrains *driven_;        // grains other fixes drive, hold or anchor
+  class CrushFamilyCheck *family_check_;   // each event's fragments apart when they first interact
   char *data_id_;
   class FixPropertyAtom *fix_true_density_;  // fragment_density scaled: per atom, its true density
   char *true_density_id_;

@@ -19,6 +19,7 @@
 #include "fix_contact_history_mesh.h"
 #include "fix_mesh_surface.h"
 #include "fix_neighlist_mesh.h"
+#include "fix_property_atom.h"
 #include "fix_wall_gran.h"
 #include "modify.h"
 #include "my_page.h"
@@ -285,6 +286,9 @@ void CrushListInsertion::extend_mesh_lists()
 {
   for (FixMeshSurface *mesh : meshes_with_lists()) {
     FixNeighlistMesh *lists = mesh->meshNeighlist();
+    // each fragment's count of triangles that list it (n_neighs_mesh_*, fragments start at 0): the
+    // mesh contact history sizes its slots by it
+    FixPropertyAtom *count = lists->fix_nneighs();
     int added = 0;
     for (int t = 0; t < lists->n_triangle_lists(); t++) {
       std::vector<int> &listed = lists->contact_list(t);
@@ -296,6 +300,7 @@ void CrushListInsertion::extend_mesh_lists()
           const Family &f = families_[family_of_[listed[e]]];
           listed.insert(listed.end(), f.members.begin() + 1, f.members.end());
           added += static_cast<int>(f.members.size()) - 1;
+          for (int b : f.members) count->set_vector_atom_int(b, count->get_vector_atom_int(b) + 1);
         }
       }
     }

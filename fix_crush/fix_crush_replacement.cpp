@@ -9,8 +9,8 @@
    user's own properties), copied. Values that sum over a particle (heat flux and source, CFD drag)
    go by the fragment's mass share, so that the fragments hold what the mother held less the removed
    volume's share. Contacts are new: contact histories (fix contact/history, the primitive walls'
-   history_<wall>) start empty. Grains of rigid bodies (fix multisphere, fix rigid) cannot break:
-   14 spheres are not a piece of a clump.
+   history_<wall>) start empty. What fixes that drive, hold or anchor grains keep for a fragment
+   (insert/stream, spring/self, move, rigid bodies) is fix_crush_driven_grains.h's.
 ------------------------------------------------------------------------- */
 #include "fix_crush.h"
 
@@ -30,7 +30,8 @@
 #include "crush_model_error.h"
 #include "domain.h"
 #include "error.h"
-#include "fix_multisphere.h"
+#include "fix_crush_driven_grains.h"
+#include "fix_crush_family_check.h"
 #include "fix_property_atom.h"
 #include "group.h"
 #include "irregular.h"
@@ -42,7 +43,8 @@ using namespace LAMMPS_NS;
 namespace {
 
 // Per-particle values that sum something (a power, a force): split by mass share.
-const char *const kSharedProperties[] = {"heatFlux", "heatSource", "directionalHeatFlux", "dragforce", "hdtorque"};
+const char *const kSharedProperties[] = {"heatFlux", "heatSource", "directionalHeatFlux", "dragforce", "hdtorque",
+                                        "Ksl", "KslRotation", "KslExtra"};
 
 bool is_shared(const char *name)
 {
@@ -54,10 +56,16 @@ bool is_shared(const char *name)
 }  // namespace
 
 // At init: every fix property/atom but fix crush's own, with its rule. A primitive wall keeps its
-// contact history in 'history_<wall ID>' (fix wall/gran): a fragment's wall contacts are new.
+// contact history in 'history_<wall ID>' (fix wall/gran), a mesh its count of triangles listing a
+// particle in 'n_neighs_mesh_<mesh>' (its contact history reads that many slots): a fragment's wall
+// contacts are new, the count set where it joins a list (fix_crush_list_insertion.cpp). A
+// driving fix's data (insert/stream's release) keep their defaults: the fragment is not driven.
+// The other per-atom arrays without defaults for a new atom (fix store, store/state, ave/atom,
+// spring/self: LIGGGHTS leaves the slot as it was) are copied, never left stale.
 void FixCrush::find_inherited_state()
 {
   inherited_.clear();
+  copied_arrays_.clear();
   std::vector<std::string> wall_histories;
   for (int k = 0; k < modify->nfix; k++)
     if (strcmp(modify->fix[k]->style, "wall/gran") == 0)
@@ -68,17 +76,23 @@ void FixCrush::find_inherited_state()
     if (!fix || fix == fix_data_ || fix == fix_true_density_) continue;
     const std::string name = fix->id;
     Inheritance rule = Inheritance::COPY;
-    if (std::find(wall_histories.begin(), wall_histories.end(), name) != wall_histories.end())
+    if (std::find(wall_histories.begin(), wall_histories.end(), name) != wall_histories.end() ||
+        name.compare(0, 14, "n_neighs_mesh_") == 0 || driven_->driving_property(fix))
       rule = Inheritance::NEW;
     else if (is_shared(fix->id))
       rule = Inheritance::SHARE;
     inherited_.push_back({fix, rule});
+  }
+  for (int k = 0; k < atom->nextra_grow; k++) {
+    Fix *fix = modify->fix[atom->extra_grow[k]];
+    if (!fix->create_attribute && !dynamic_cast<FixPropertyAtom *>(fix)) copied_arrays_.push_back(fix);
   }
 }
 
 // The fragment's per-atom values from its mother's, after every fix's set_arrays gave it the defaults.
 void FixCrush::inherit_state(int mother, int fragment, double mass_share) const
 {
+  for (Fix *fix : copied_arrays_) fix->copy_arrays(mother, fragment, 0);
   for (const InheritedState &state : inherited_) {
     if (state.rule == Inheritance::NEW) continue;
     FixPropertyAtom *fix = state.fix;
@@ -89,49 +103,6 @@ void FixCrush::inherit_state(int mother, int fragment, double mass_share) const
     else
       fix->vector_atom[fragment] *= mass_share;
   }
-}
-
-void FixCrush::find_bodies()
-{
-  body_fixes_.clear();
-  for (int k = 0; k < modify->nfix; k++)
-    if (strncmp(modify->fix[k]->style, "multisphere", 11) == 0 || strncmp(modify->fix[k]->style, "rigid", 5) == 0)
-      body_fixes_.push_back(modify->fix[k]);
-}
-
-// The style of the fix whose rigid body holds particle i, or NULL.
-const char *FixCrush::body_fix_of(int i) const
-{
-  for (Fix *fix : body_fixes_) {
-    if (strncmp(fix->style, "multisphere", 11) == 0) {
-      if (static_cast<FixMultisphere *>(fix)->belongs_to(i) >= 0) return fix->style;
-    } else if (atom->mask[i] & fix->groupbit) {
-      return fix->style;
-    }
-  }
-  return NULL;
-}
-
-// At init: no grain of the group belongs to a rigid body (bodies inserted later are caught at their event).
-void FixCrush::check_bodies() const
-{
-  if (body_fixes_.empty()) return;
-  int first = -1;
-  for (int i = 0; i < atom->nlocal && first < 0; i++)
-    if ((atom->mask[i] & groupbit) && body_fix_of(i)) first = i;
-  int tag = first >= 0 ? atom->tag[first] : 0, tag_all = 0;
-  MPI_Allreduce(&tag, &tag_all, 1, MPI_INT, MPI_MAX, world);
-  if (tag_all == 0) return;
-  if (first >= 0 && atom->tag[first] == tag_all) body_error(tag_all, body_fix_of(first));
-  MPI_Barrier(world);  // the owner stops the run
-}
-
-void FixCrush::body_error(tagint tag, const char *body) const
-{
-  char msg[512];
-  snprintf(msg, sizeof(msg), "Fix crush (id %s): particle %ld belongs to a rigid body of fix %s: a body's spheres "
-           "cannot break into fragments; leave the bodies out of fix crush's group", id, static_cast<long>(tag), body);
-  error->one(FLERR, msg);
 }
 
 // in_place: the mothers lie away from every boundary, and the fragments join the lists without a
@@ -188,8 +159,17 @@ void FixCrush::replace_mothers(bool in_place)
     if (irregular_->migrate_check()) irregular_->migrate_atoms();
   }
   if (settings_.check_tags) check_unique_tags();
+  remember_families(first);
 
   if (settings_.dmin <= 0.0) check_time_step(smallest_radius());
+}
+
+// Every agreed event's fragments, for the check before they first interact (fix_crush_family_check.h).
+void FixCrush::remember_families(tagint first) const
+{
+  std::vector<tagint> mothers;
+  for (const Event &event : pending_) mothers.push_back(event.tag);
+  family_check_->remember(mothers, first, nfrag_);
 }
 
 // One event's fragments appended; returns the volume they leave out, and lowers 'smallest' to the
@@ -287,7 +267,7 @@ double FixCrush::create_fragments(int mother, tagint first_tag, int generation)
     vm[k] = atom->v[mother][k];
     wm[k] = atom->omega[mother][k];
   }
-  if (const char *body = body_fix_of(mother)) body_error(tag, body);
+  if (const char *refusing = driven_->refusing_fix(mother)) driven_->refuse(id, tag, refusing);
   std::vector<crush::Fragment> fragments;
   try {
     fragments = crush::fragment_layout(settings_.layout, R);
@@ -322,6 +302,7 @@ double FixCrush::create_fragments(int mother, tagint first_tag, int generation)
         modify->fix[m]->set_arrays(n);
       }
     inherit_state(mother, n, volume / crush::sphere_volume(2.0 * R));
+    driven_->anchor(mother, n, fragments[f].offset.data());
     if (fix_true_density_) fix_true_density_->vector_atom[n] = rho_true;
     double *data = fix_data_->array_atom[n];
     try {

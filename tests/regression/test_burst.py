@@ -11,6 +11,7 @@ deck implies (which grains, and their fragment tags), whatever the number of ran
 """
 import math
 import os
+import re
 import shutil
 import sys
 
@@ -357,6 +358,86 @@ def case_balance_restart(liggghts, work, ranks):
     drift = periodic_drift(final, final2)
     check([a["id"] for a in final] == [b["id"] for b in final2] and drift < 1e-9,
           "the same %d particles at the end, positions within 1 nm (%.2g m)" % (len(final), drift))
+
+
+# in.burst_driven: the burst's breakable half driven by another fix (doc/fix_crush.txt, the inheritance
+# table). The lattice is at rest and balanced until the burst (step 1, replaced at step 2), so each
+# mother's place at her event is her lattice site; a fragment's offset from it is R - r long.
+DRIVEN_STEPS, DT, MOVE_VELOCITY, SPRING_K = 100, 1e-8, 1.0, 1e4
+
+
+def fragments_of(log, final):
+    """[(fragment row, mother's event row)] of every fragment in the final dump."""
+    events = {int(e["fragment_%d" % (f + 1)]): e for e in log for f in range(FRAGMENTS)}
+    return [(r, events[int(r["id"])]) for r in final if int(r["id"]) in events]
+
+
+def offset_errors(pairs, shift):
+    """Per fragment: | |x_f - shift - x_mother| - (R - r_f) | (m), x_f unwrapped and the difference taken
+    to the nearest periodic image: 0 when the fragment sits where it was born, moved by shift (m)."""
+    box = CELLS * SPACING
+    errors = []
+    for r, e in pairs:
+        d = [r[u] - s - float(e[k]) for u, s, k in zip(("xu", "yu", "zu"), shift, "xyz")]
+        d = [c - box * round(c / box) for c in d]
+        errors.append(abs(math.sqrt(sum(c * c for c in d)) - (float(e["diameter"]) / 2 - r["radius"])))
+    return errors
+
+
+@variants(*[(driver, ranks) for driver in ("move", "freeze", "spring") for ranks in (1, 2, 3, 4)], timeout=600)
+def case_driven(liggghts, work, driver, ranks):
+    """The breakable half moved by fix move linear, frozen by fix freeze or tethered by fix spring/self
+    bursts in one step, on 1 - 4 ranks, with the burst's books; then each fragment follows its driver
+    from its own place: moved by exactly v (T - 1) dt from its offset (fix move's reference of a new
+    atom); frozen where it was born, its compute displace/atom displacement 0 (its original position
+    the mother's shifted by its offset, not hers: that would read R - r); tethered to its mother's
+    anchor shifted by its offset: the springs' energy right after the replacement is that of the
+    grains' rest, not 0.5 K sum (R - r)^2 (copied anchors), and after 100 steps every fragment is
+    still within 5% of R of its place (pulled to the mother's anchor it would not be)."""
+    ranks = int(ranks)
+    types = run_burst(liggghts, "in.burst_driven", work, "half", ranks, variables={"driver": driver})
+    log, final = check_run(work, "half", ranks, types)
+    pairs = fragments_of(log, final)
+    R = DIAMETER / 2
+    if driver == "move":
+        errors = offset_errors(pairs, (MOVE_VELOCITY * (DRIVEN_STEPS - 1) * DT, 0.0, 0.0))
+        check(max(errors) < 1e-12, "%d moved fragments each at its offset from its mother's path, moved %.3g m "
+              "(largest error %.2g m)" % (len(errors), MOVE_VELOCITY * (DRIVEN_STEPS - 1) * DT, max(errors)))
+    elif driver == "freeze":
+        errors = offset_errors(pairs, (0.0, 0.0, 0.0))
+        check(max(errors) < 1e-12, "%d frozen fragments where they were born (largest error %.2g m)"
+              % (len(errors), max(errors)))
+        displaced = max(r["c_disp[4]"] for r, e in pairs)
+        check(displaced < 1e-12, "their displacement from their original positions 0 (largest %.2g m)" % displaced)
+    else:
+        thermo = {row["Step"]: row for row in read_thermo(os.path.join(work, "log.liggghts"))}
+        copied = 0.5 * SPRING_K * sum((float(e["diameter"]) / 2 - r["radius"]) ** 2 for r, e in pairs)
+        check(thermo[2]["drive"] < 1e-12 * copied, "the springs' energy after the replacement %.3g J (copied "
+              "anchors: %.3g J)" % (thermo[2]["drive"], copied))
+        errors = offset_errors(pairs, (0.0, 0.0, 0.0))
+        check(max(errors) < 0.05 * R, "after %d steps every fragment within %.2g of R of its place"
+              % (DRIVEN_STEPS, max(errors) / R))
+
+
+REFUSALS = {"move_variable": "is moved by fix move (style variable), which cannot take new atoms",
+            "rigid": "belongs to a rigid body of fix rigid"}
+
+
+@variants(*[(driver, ranks) for driver in sorted(REFUSALS) for ranks in (1, 2)])
+def case_driven_refused(liggghts, work, driver, ranks):
+    """A grain of fix crush's group moved by fix move variable (LIGGGHTS cannot give it fragments) or
+    in a fix rigid body: the run stops at its start, before its first step, naming a particle of type 2."""
+    if os.path.isdir(work):
+        shutil.rmtree(work)
+    os.makedirs(work)
+    types = write_data(os.path.join(work, "burst.data"))
+    out = run_deck(liggghts, os.path.join(BURST, "in.burst_driven"), work,
+                   {"driver": driver, "log": "events.csv", "out": "final.dump"}, ranks=int(ranks),
+                   expect_fail=True, keep=True)
+    named = re.search(r"particle (\d+) " + re.escape(REFUSALS[driver]), out)
+    check(named is not None and types[int(named.group(1))] == 2 and "Step" not in out,
+          "on %s rank(s) the run stops before its first step: 'particle %s %s'"
+          % (ranks, named.group(1) if named else "?", REFUSALS[driver]))
 
 if __name__ == "__main__":
     test_main(globals(), sys.argv[1:])
