@@ -48,7 +48,7 @@ namespace {
 
 enum Output { EVENTS = 0, REMOVED_VOLUME = 1, LARGEST_RATIO = 2, REPLACE_SECONDS = 3, CHECKED_STEPS = 4,
               OUTFLOW_VOLUME = 5, OUTFLOW_PARTICLES = 6, TRUE_MASS = 7, LARGEST_DENSITY_SCALE = 8,
-              INSERTED_STEPS = 9, NOUTPUT = 10 };  // vector
+              INSERTED_STEPS = 9, HELD_AT_LIMIT = 10, NOUTPUT = 11 };  // vector
 
 crush::CrushSettings parse(Fix *fix, Error *error, int me, int narg, char **arg)
 {
@@ -83,7 +83,7 @@ FixCrush::FixCrush(LAMMPS *lmp, int narg, char **arg) :
   settings_(parse(this, error, comm->me, narg, arg)),
   strength_(settings_.distribution, settings_.sigma_lim0, settings_.cv, settings_.weibull_m, settings_.seed),
   nfrag_(static_cast<int>(crush::fragment_layout(settings_.layout, 1.0).size())),
-  region_(NULL), fix_data_(NULL), driven_(NULL), family_check_(NULL), data_id_(NULL), fix_true_density_(NULL), true_density_id_(NULL), fix_scale_(NULL), limit_factor_(NULL), irregular_(NULL), list_insertion_(NULL), inserting_(false), inserted_steps_(0), log_(NULL),
+  region_(NULL), fix_data_(NULL), driven_(NULL), family_check_(NULL), data_id_(NULL), fix_true_density_(NULL), true_density_id_(NULL), fix_scale_(NULL), limit_factor_(NULL), irregular_(NULL), list_insertion_(NULL), inserting_(false), inserted_steps_(0), held_at_limit_(0), log_(NULL),
   events_total_(0), removed_volume_(0.0), outflow_volume_(0.0), outflow_particles_(0), outflow_reported_(false),
   max_ratio_(0.0), local_max_ratio_(0.0), max_ratio_step_(-1),
   smallest_fragment_size_(0.0), initial_largest_size_(0.0), next_tag_(1), replace_seconds_(0.0),
@@ -221,11 +221,10 @@ void FixCrush::init()
   }
 }
 
-// Only grains inside the region may break (keyword region): a scene crushes where it needs to. A
-// grain an insertion still carries has no free grain's forces: it waits for its release.
+// Only grains inside the region may break (keyword region): a scene crushes where it needs to.
 bool FixCrush::may_break(int i) const
 {
-  if (!breakable(i) || driven_->held(i)) return false;
+  if (!breakable(i)) return false;
   const double *x = atom->x[i];
   return !region_ || region_->match(x[0], x[1], x[2]);
 }
@@ -516,8 +515,12 @@ void FixCrush::end_of_step()
   std::vector<int> mothers;
   if (local_max >= 1.0) {
     if (region_) region_->prematch();  // a moving region: its position at this step
-    for (int i = 0; i < atom->nlocal; i++)
-      if (data[i][RATIO] >= 1.0 && may_break(i)) mothers.push_back(i);
+    for (int i = 0; i < atom->nlocal; i++) {
+      if (data[i][RATIO] < 1.0 || !may_break(i)) continue;
+      // A grain an insertion still carries has no free grain's forces: it waits for its release.
+      if (driven_->held(i)) held_at_limit_++;
+      else mothers.push_back(i);
+    }
   }
   local_max_ratio_ = local_max;
   max_ratio_step_ = -1;  // reduced over processors when output asks for it, not every step
@@ -770,6 +773,11 @@ double FixCrush::compute_vector(int n)
   if (n == TRUE_MASS) return true_mass();
   if (n == LARGEST_DENSITY_SCALE) return largest_density_scale();
   if (n == INSERTED_STEPS) return static_cast<double>(inserted_steps_);
+  if (n == HELD_AT_LIMIT) {
+    bigint held_all = 0;
+    MPI_Allreduce(&held_at_limit_, &held_all, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+    return static_cast<double>(held_all);
+  }
   return replace_seconds_;
 }
 

@@ -189,6 +189,7 @@ class FixCrush : public Fix, public NeighborInsertion {
   class CrushListInsertion *list_insertion_;  // 'event_lists insert': fragments into the lists in place
   bool inserting_;                   // this run's lists and fixes take fragments without a rebuild
   bigint inserted_steps_;            // event steps replaced without a rebuild (f_ID[10])
+  bigint held_at_limit_;             // this processor's checks of a held grain at its limit (f_ID[11])
   FILE *log_;
 
   std::vector<Event> found_;         // this processor's, found at end_of_step, agreed at the next rebuild

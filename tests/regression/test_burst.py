@@ -439,5 +439,24 @@ def case_driven_refused(liggghts, work, driver, ranks):
           "on %s rank(s) the run stops before its first step: 'particle %s %s'"
           % (ranks, named.group(1) if named else "?", REFUSALS[driver]))
 
+@variants(*each_rank_count(1, 2, 3, 4))
+def case_coincide(liggghts, work, ranks):
+    """Two fragments of one event put on one point before they first interact (in.burst_coincide):
+    the run stops at the next setup with fix crush's error naming both and their grain, not with the
+    pair style's "no contact normal exists"."""
+    if os.path.isdir(work):
+        shutil.rmtree(work)
+    os.makedirs(work)
+    write_data(os.path.join(work, "burst.data"))
+    first = CELLS ** 3 + 1
+    out = run_deck(liggghts, os.path.join(BURST, "in.burst_coincide"), work,
+                   {"log": "events.csv", "first": first}, ranks=int(ranks), expect_fail=True, keep=True)
+    mother = read_events(os.path.join(work, "events.csv"))[0]["tag"]
+    said = re.search(r"fragments %d and %d of grain %s \(replaced at step 2\) lie (\S+) m apart at step 2, less "
+                     r"than the smaller one's radius" % (first, first + 1, mother), out)
+    check(said is not None and float(said.group(1)) < 1e-12 and "no contact normal" not in out,
+          "on %s rank(s) the run stops naming fragments %d and %d of grain %s, %s m apart"
+          % (ranks, first, first + 1, mother, said.group(1) if said else "?"))
+
 if __name__ == "__main__":
     test_main(globals(), sys.argv[1:])

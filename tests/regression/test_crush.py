@@ -506,5 +506,29 @@ def case_time_step_after_event(liggghts, work):
     check("Step" in out, "it ran before the event")
 
 
+@variants(*each_rank_count(1, 2, 3, 4))
+def case_held_stream(liggghts, work, ranks):
+    """Grains fix insert/stream still carries, pressed into a frozen layer (crush/in.held_stream):
+    they reach their limit while held (f_crush[11] counts those checks) and each breaks only after
+    its release step; most of the 40 break (the decomposition orders the sums: 38 - 40), their
+    fragments free (the run goes on), and the
+    books hold: particles = 100 + inserted + 13 x events, every tag once. With the fragments given
+    their mother's release data, insert/stream put all fourteen on one point and the pair style stopped."""
+    out = run_deck(liggghts, os.path.join(CRUSH, "in.held_stream"), work,
+                   {"log": "events.csv", "out": "final.dump", "release": "release.dump"}, ranks=int(ranks))
+    release = {int(r["id"]): int(r["f_release_fix_insert_stream[5]"])
+               for r in read_dump(os.path.join(work, "release.dump"))[-1][2]}
+    events = read_events(os.path.join(work, "events.csv"))
+    held = printed(out, "HELD_AT_LIMIT")
+    after = [int(e["step"]) - release[int(e["tag"])] for e in events]
+    check(held > 0 and len(release) == 40 and len(events) >= 30 and min(after) >= 1,
+          "on %s rank(s) %d checks found held grains at their limit; %d of the 40 broke, %d - %d steps after "
+          "their release" % (ranks, held, len(events), min(after), max(after)))
+    rows = read_dump(os.path.join(work, "final.dump"))[-1][2]
+    tags = [int(r["id"]) for r in rows]
+    check(len(tags) == len(set(tags)) == 100 + printed(out, "INSERTED") + 13 * len(events),
+          "%d particles = 100 + %d inserted + 13 x %d events, every tag once" % (len(tags), printed(out, "INSERTED"),
+                                                                                len(events)))
+
 if __name__ == "__main__":
     test_main(globals(), sys.argv[1:])

@@ -236,5 +236,87 @@ def case_heat_transfer(liggghts, work, bed, ranks):
           "(%.6g - %.6g K)" % (len(temperatures), min(temperatures), max(temperatures)))
 
 
+# LIGGGHTS' conveyor tutorial (insert/stream carries each grain through the insertion volume until its
+# release step; a belt mesh carries them off) with crushing as a user adds it: 'neighbor 0.01 multi'
+# and one fix crush line after 'fix integr', optionally own_deck.md's balancer line. Free grains
+# bounce into grains the stream still carries; some reach their limit before their release, and
+# f_crush[11] counts the checks that found one (in.held_stream tests the rule grain by grain).
+CONVEYOR_CRUSH = ("fix crush all crush sigma_lim0 1e6 cv 0.5 weibull_m 10 d0 0.05 seed 1234567 dmin 0.005 "
+                  "log crush_events.csv check_tags yes")
+CONVEYOR_BALANCE = "fix bal all balance 1000 1.05 shift xyz 20 1.0 weight neighbors"
+
+
+def conveyor_deck(liggghts, work, steps, balancer):
+    """The conveyor tutorial in work/deck, run to step `steps`, with the lines above (the thermo output
+    with the events and the held grains' checks) and a summary."""
+    folder = copy_tutorial(liggghts, "conveyor", work)
+    path = os.path.join(folder, "in.conveyor")
+    text = open(path).read()
+    edits = [("neighbor\t0.01 bin", "neighbor\t0.01 multi"),
+             ("fix\t\tintegr nve_group nve/sphere\n",
+              "fix\t\tintegr nve_group nve/sphere\n" + CONVEYOR_CRUSH + "\n"
+              + (CONVEYOR_BALANCE + "\n" if balancer == "balance" else "")),
+             ("f_ts[1] f_ts[2] vol\n", "f_ts[1] f_ts[2] vol f_crush[1] f_crush[11]\n"),
+             ("run\t\t\t140000 upto", "run\t\t\t%d upto" % steps),
+             ("\nunfix\t\tins", '\nprint "INSERTED $(f_ins[1])"\nunfix\t\tins')]
+    for old, new in edits:
+        check(old in text, "the tutorial has '%s'" % old.strip())
+        text = text.replace(old, new)
+    text = text.replace("\ndump\t\tdmp", "\n#dump\t\tdmp")
+    text += ('print "EVENTS $(f_crush[1])"\nprint "HELD_AT_LIMIT $(f_crush[11])"\n'
+             'write_dump all custom final.dump id radius f_crush[2] modify format "%d %.17g %g"\n')
+    open(path, "w").write(text)
+    return path
+
+
+def check_conveyor(out, run, ranks, balancer):
+    """Books exact: particles = inserted + 13 x events, every tag once; returns the checks that found a
+    held grain at its limit."""
+    events = read_events(os.path.join(run, "crush_events.csv"))
+    rows = read_dump(os.path.join(run, "final.dump"))[-1][2]
+    inserted = int(printed(out, "INSERTED"))
+    check(printed(out, "EVENTS") == len(events) > 0, "%d events, all in the log" % len(events))
+    check_unique_tags("conveyor", rows)
+    check(len(rows) == inserted + 13 * len(events), "%d particles = %d inserted + 13 x %d events (%s rank(s), %s)"
+          % (len(rows), inserted, len(events), ranks, balancer))
+    return printed(out, "HELD_AT_LIMIT")
+
+
+# The steps of each length: the shortened run of the default set reaches held grains at their limit
+# on 1 and 2 ranks; the whole tutorial (long set) is the run a user makes.
+CONVEYOR_STEPS = {"short": 40000, "whole": 140000}
+
+
+@variants(*[("short", ranks, balancer) for ranks in (1, 2) for balancer in ("slabs", "balance")]
+          + [("whole", 2, balancer) for balancer in ("slabs", "balance")], timeout=1200)
+def case_conveyor(liggghts, work, length, ranks, balancer):
+    """LIGGGHTS' conveyor tutorial with crushing, on 1 and 2 ranks, with and without the balancer:
+    it runs, the books are exact, and the run reaches grains the stream still carries at their
+    limit (they wait for their release: with their fragments given the release data, the whole run
+    stopped at step 43,5xx on 2 ranks, every fragment on its mother's path)."""
+    path = conveyor_deck(liggghts, work, CONVEYOR_STEPS[length], balancer)
+    run = os.path.join(work, "run")
+    out = run_deck(liggghts, path, run, ranks=int(ranks))
+    held = check_conveyor(out, run, ranks, balancer)
+    check(held > 0, "%d checks found a grain the stream still carried at its limit" % held)
+
+
+def case_multisphere(liggghts, work):
+    """LIGGGHTS' multisphere tutorial (stones of 50 spheres each, inserted at its first run) with the
+    fix crush line after 'fix integr': the next run stops at its start, naming a sphere of a stone,
+    instead of breaking a piece of a rigid clump into free fragments."""
+    folder = copy_tutorial(liggghts, "multisphere_stone_restitution", work)
+    path = os.path.join(folder, "in.multisphere")
+    text = open(path).read()
+    line = "fix\t\tintegr all multisphere\n"
+    check(line in text, "the tutorial integrates its stones with '%s'" % line.strip())
+    text = text.replace(line, line + "fix crush all crush sigma_lim0 1e5 cv 0.5 weibull_m 10 d0 0.05 seed 1234567\n")
+    text = text.replace("\ndump", "\n#dump")
+    open(path, "w").write(text)
+    out = run_deck(liggghts, path, os.path.join(work, "run"), expect_fail=True)
+    said = re.search(r"particle (\d+) belongs to a rigid body of fix multisphere", out)
+    check(said is not None, "the run stops: 'particle %s belongs to a rigid body of fix multisphere'"
+          % (said.group(1) if said else "?"))
+
 if __name__ == "__main__":
     test_main(globals(), sys.argv[1:])
