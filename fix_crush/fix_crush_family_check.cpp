@@ -25,6 +25,7 @@ void CrushFamilyCheck::remember(const std::vector<tagint> &mothers, tagint first
 void CrushFamilyCheck::check(const char *crush_id, bool setup)
 {
   // At a step's pre_force, fragments replaced in this step's pre_exchange lie where they were put.
+  if (families_.empty()) return;  // the same on every processor: all remember every family
   const bigint now = update->ntimestep;
   const bool moved = setup || std::any_of(families_.begin(), families_.end(),
                                           [now](const Family &f) { return f.step < now; });

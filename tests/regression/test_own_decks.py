@@ -282,23 +282,27 @@ def check_conveyor(out, run, ranks, balancer):
     return printed(out, "HELD_AT_LIMIT")
 
 
-# The steps of each length: the shortened run of the default set reaches held grains at their limit
-# on 1 and 2 ranks; the whole tutorial (long set) is the run a user makes.
-CONVEYOR_STEPS = {"short": 40000, "whole": 140000}
+# The steps of each length: the shortened run of the default set, and the whole tutorial (long set).
+# On 2 ranks the stream's grains are first found at their limit at steps 53,000 - 54,000 (equal
+# slabs) and 44,000 - 45,000 (with the balancer), and the shortened run must reach them; on 1 rank
+# the tutorial's trajectory meets none in its 140,000 steps (measured, both lines), and the run
+# checks the books.
+CONVEYOR_STEPS = {"short": 60000, "whole": 140000}
 
 
 @variants(*[("short", ranks, balancer) for ranks in (1, 2) for balancer in ("slabs", "balance")]
           + [("whole", 2, balancer) for balancer in ("slabs", "balance")], timeout=1200)
 def case_conveyor(liggghts, work, length, ranks, balancer):
     """LIGGGHTS' conveyor tutorial with crushing, on 1 and 2 ranks, with and without the balancer:
-    it runs, the books are exact, and the run reaches grains the stream still carries at their
-    limit (they wait for their release: with their fragments given the release data, the whole run
-    stopped at step 43,5xx on 2 ranks, every fragment on its mother's path)."""
+    it runs, the books are exact, and on 2 ranks the run reaches grains the stream still carries at
+    their limit (they wait for their release: with their fragments given the release data, the
+    whole run stopped at step 43,5xx on 2 ranks, every fragment on its mother's path)."""
     path = conveyor_deck(liggghts, work, CONVEYOR_STEPS[length], balancer)
     run = os.path.join(work, "run")
     out = run_deck(liggghts, path, run, ranks=int(ranks))
     held = check_conveyor(out, run, ranks, balancer)
-    check(held > 0, "%d checks found a grain the stream still carried at its limit" % held)
+    if int(ranks) == 2:
+        check(held > 0, "%d checks found a grain the stream still carried at its limit" % held)
 
 
 def case_multisphere(liggghts, work):
