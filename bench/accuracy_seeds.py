@@ -13,9 +13,9 @@ inside which an error is not an error.
 
 Per setting (OUT_DIR/accuracy_seeds_settings.csv, post/seeds.py's statistics and changes):
   - each error's mean and standard error over the seeds, and whether it exceeds the reference's own
-    spread by 2 standard errors;
+    spread by its 95% t interval (Welch);
   - each measure's change against the base N = 2 setting (L_R 0.1, dmin 0.05 mm, ...), paired by
-    seed (the seed fixes the sample and the strengths at one N), resolved or not at 2 se;
+    seed (the seed fixes the sample and the strengths at one N), resolved or not by its 95% t interval;
   - each measure's change against the reference (unpaired: another N is another sample);
   - the cost: the runtime over the base's in the same round (seed), median and range of the rounds.
 Writes also accuracy_seeds_table.md and pareto_seeds.png (each error against the cost ratio, with
@@ -31,7 +31,7 @@ sys.path.insert(0, HERE)
 sys.path.insert(0, os.path.dirname(HERE))
 import accuracy_vs_cost as avc  # noqa: E402
 from post import compression_seeds  # noqa: E402
-from post.seeds import change, resolved, statistics, write_csv  # noqa: E402
+from post.seeds import change, resolved, statistics, t_quantile, welch_df, write_csv  # noqa: E402
 
 import matplotlib  # noqa: E402
 
@@ -131,7 +131,8 @@ def main(out):
             n, mean, sd, se = statistics([r[e] for r in seeds.values() if math.isfinite(r[e])])
             line[e], line[e + "_se"] = mean, se
             if s != REFERENCE:
-                line[e + "_beyond_spread"] = resolved(mean - spread[e][1], math.sqrt(se ** 2 + spread[e][3] ** 2)) \
+                line[e + "_beyond_spread"] = resolved(mean - spread[e][1], math.sqrt(se ** 2 + spread[e][3] ** 2),
+                                                      welch_df(se, n, spread[e][3], spread[e][0])) \
                     if mean > spread[e][1] else "no"
         for m in MEASURES:
             base = {k: r[m] for k, r in by.get(BASE, {}).items() if math.isfinite(r[m])}
@@ -144,9 +145,9 @@ def main(out):
                 line["vs_base_paired"] = "yes" if paired and same_n else "no"
                 if paired and same_n:
                     line[m + "_vs_base"], line[m + "_vs_base_se"] = paired[1], paired[2]
-                    line[m + "_vs_base_resolved"] = resolved(paired[1], paired[2])
+                    line[m + "_vs_base_resolved"] = resolved(paired[1], paired[2], paired[3])
                 else:
-                    line[m + "_vs_base"], line[m + "_vs_base_se"] = unpaired
+                    line[m + "_vs_base"], line[m + "_vs_base_se"] = unpaired[:2]
                     line[m + "_vs_base_resolved"] = resolved(*unpaired)
             ref = {k: r[m] for k, r in by[REFERENCE].items() if math.isfinite(r[m])}
             if other:
@@ -154,7 +155,7 @@ def main(out):
                 line[m], line[m + "_se"] = stats[1], stats[3]
             if s != REFERENCE and ref and other:
                 _, _, unpaired, _ = change(ref, other)
-                line[m + "_vs_reference"], line[m + "_vs_reference_se"] = unpaired
+                line[m + "_vs_reference"], line[m + "_vs_reference_se"] = unpaired[:2]
                 line[m + "_vs_reference_resolved"] = resolved(*unpaired)
         # the cost: runtime over the base's in the same round
         ratios = [r["seconds"] / by[BASE][k]["seconds"] for k, r in seeds.items() if BASE in by and k in by[BASE]]
@@ -162,9 +163,9 @@ def main(out):
         if ratios:
             line["cost_vs_base_median"] = float(np.median(ratios))
             line["cost_vs_base_min"], line["cost_vs_base_max"] = min(ratios), max(ratios)
-            _, mean, _, se = statistics(ratios)
+            n, mean, _, se = statistics(ratios)
             line["cost_vs_base_mean"], line["cost_vs_base_se"] = mean, se
-            line["cost_vs_base_resolved"] = resolved(mean - 1.0, se) if s != BASE else ""
+            line["cost_vs_base_resolved"] = resolved(mean - 1.0, se, n - 1) if s != BASE else ""
         csv_rows.append(line)
     write_csv(os.path.join(out, "accuracy_seeds_settings.csv"), csv_rows)
     table = markdown(csv_rows, spread)
@@ -175,9 +176,9 @@ def main(out):
 
 def markdown(lines, spread):
     out = ["Errors against the reference seeds' mean (mean +- se over the setting's seeds; '*': beyond the "
-           "reference's own spread by 2 se). The reference's row: each of its seeds against the mean of the others. "
+           "reference's own spread by its 95% t interval). The reference's row: each of its seeds against the mean of the others. "
            "Cost: the runtime over N2's in the same round, median and range of the rounds ('*': the rounds' mean "
-           "differs from 1 by more than 2 se).", "",
+           "differs from 1 by its 95% t interval).", "",
            "| setting | seeds | cost vs N2 (median, range) | dn | dK0 | dGSD (%) | dI_G | d events (%) | d yield (%) |",
            "|---|---|---|---|---|---|---|---|---|"]
     for line in lines:
@@ -192,7 +193,7 @@ def markdown(lines, spread):
             cells.append(("%.*f" % (digits, mean)) + ("" if not math.isfinite(se) else " +- %.*f" % (digits, se)) + mark)
         out.append("| " + " | ".join(cells) + " |")
     out += ["", "Changes against the base N2, paired by seed at N = 2 (unpaired at another N, whose seed draws "
-            "another sample); mean +- se, '*': resolved at 2 se:", "",
+            "another sample); mean +- se, '*': resolved (95% t interval):", "",
             "| setting | n at 10 MPa | n at 100 MPa | K0 | I_G at 100 MPa | events per grain | yield (MPa) |",
             "|---|---|---|---|---|---|---|"]
     for line in lines:
@@ -212,14 +213,16 @@ def figure(lines, spread, out):
             ("err_I_G", "I_G"), ("err_events_relative", "events per grain (relative)")]
     fig, axes = plt.subplots(1, len(keys), figsize=(4.4 * len(keys), 4.6))
     for ax, (key, title) in zip(axes, keys):
-        ax.axhspan(0, spread[key][1] + 2 * spread[key][3], color="0.85", label="reference's own spread (+ 2 se)")
+        top = spread[key][1] + t_quantile(spread[key][0] - 1) * spread[key][3]
+        ax.axhspan(0, top, color="0.85", label="reference's own spread (95% t upper bound)")
         for k, line in enumerate(lines):
             if line["setting"] == REFERENCE or "cost_vs_base_median" not in line:
                 continue
             x = line["cost_vs_base_median"]
             xerr = [[x - line["cost_vs_base_min"]], [line["cost_vs_base_max"] - x]]
             se = line[key + "_se"] if math.isfinite(line[key + "_se"]) else 0
-            ax.errorbar(x, line[key], yerr=2 * se, xerr=xerr, fmt="o",
+            half = t_quantile(line["seeds"] - 1) * se if line["seeds"] > 1 else 0
+            ax.errorbar(x, line[key], yerr=half, xerr=xerr, fmt="o",
                         color="C3" if line.get(key + "_beyond_spread") == "yes" else "C0", ms=4, capsize=2)
             ax.annotate(line["setting"], (x, line[key]), fontsize=7, xytext=(3, 3 + 4 * (k % 3)), textcoords="offset points")
         ax.set_xscale("log")
@@ -227,7 +230,7 @@ def figure(lines, spread, out):
         ax.set_ylabel("largest difference from the reference's mean")
         ax.set_title(title, fontsize=9)
     axes[0].legend(fontsize=7, loc="upper left")
-    fig.suptitle("Accuracy against cost with seeds: mean +- 2 se over seeds, cost median and range of rounds "
+    fig.suptitle("Accuracy against cost with seeds: mean and 95% t interval over seeds, cost median and range of rounds "
                  "(red: beyond the reference's spread)", fontsize=10)
     fig.tight_layout()
     fig.savefig(os.path.join(out, "pareto_seeds.png"), dpi=100)

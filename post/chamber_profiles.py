@@ -39,7 +39,7 @@ particles' values; it is resolved when it is more than 3 standard errors.
 Several DUMPs are chambers of one setting with other seeds (their own samples): each is written as
 OUT_<k>, on one set of annuli (within the narrowest chamber), and OUT_seeds.csv gathers the annuli's
 mean and standard error over the chambers, OUT_seed_jumps.csv each interface's jump (each chamber's,
-then their mean and standard error), resolved at 2 standard errors.
+then their mean and standard error), resolved where the 95% t interval excludes zero.
 """
 import argparse
 import csv
@@ -52,6 +52,7 @@ if not __package__:  # run as a file (python3 post/chamber_profiles.py): the fol
     sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 from post import requires  # noqa: E402
 from post.ring_stress import chamber_sector  # noqa: E402
+from post.seeds import resolved  # noqa: E402
 
 requires("chamber_profiles", "numpy", "scipy")
 
@@ -367,8 +368,8 @@ SEED_QUANTITIES = ("porosity", "p", "sigma_rr", "sigma_tt", "coordination", "coo
 def over_seeds(per_seed, interfaces, Dc):
     """Each chamber's profile (one per seed: their own samples) gathered: per annulus, the mean and the
     standard error over the chambers of each quantity; per interface, each chamber's jump (the mean
-    of the two annuli outside less the two inside) and their mean and standard error, resolved at
-    2 standard errors."""
+    of the two annuli outside less the two inside) and their mean and standard error, resolved where
+    the 95% t interval (df = chambers - 1) excludes zero."""
     annuli = []
     for k in range(len(per_seed[0])):
         row = {"r_lo": per_seed[0][k]["r_lo"], "r_hi": per_seed[0][k]["r_hi"]}
@@ -388,7 +389,7 @@ def over_seeds(per_seed, interfaces, Dc):
             if len(values) == len(per_seed) > 1:
                 mean, se = mean_se(values)
                 jumps.append({"interface": label, "R_over_Dc": R, "quantity": q, "jump": mean, "jump_se": se,
-                              "seeds": len(values), "resolved": abs(mean) > 2 * se})
+                              "seeds": len(values), "resolved": resolved(mean, se, len(values) - 1) == "yes"})
     return annuli, jumps
 
 

@@ -18,14 +18,16 @@ and 100 MPa; K0 averaged over log(sigma_v) from 1 to 100 MPa (O); I_G at the his
 (the first load) and at 1, 10 and 100 MPa; the events per initial grain by 1 MPa and at the end;
 the yield stress (where the e - log(stress) lines fitted to 0.3 - 3 MPa and above 50 MPa meet); the
 percent passing each sieve at 100 MPa. Each setting's seeds give a mean and a standard error. The
-change from the reference is unpaired (under another N a seed draws another sample; the readings
-are compared the same way) and resolved where it passes 2 standard errors. Along the whole curve
-(0.5 - 99 MPa) the porosity's largest difference from the reference is reported with its standard
-error there, and the largest |difference| / se anywhere on the curve; at 100 MPa the same over the
-sieves.
+change from the reference follows post/seeds.py's one rule: paired on the common seeds where three
+or more are common and the two settings correlate positively over them (under another N a seed
+draws another sample, yet the seeds rank the same way at N = 1, 1.5 and 2), else unpaired (Welch);
+resolved where its 95% Student-t interval excludes zero; each row says which design it used. Along
+the whole curve (0.5 - 99 MPa) the porosity's largest difference of the mean curves is reported with
+its standard error, Welch's df and interval there, and the largest |difference| / se anywhere on
+the curve; at 100 MPa the same over the sieves.
 
 Writes DIR (default .)/NAME_runs.csv (a row a run), NAME_seeds.csv (a row a setting and measure),
-NAME_seeds.png (the mean porosity curves and gradings at 100 MPa with 2-se bands) and NAME_curves.png
+NAME_seeds.png (the mean porosity curves and gradings at 100 MPa with 95% t bands) and NAME_curves.png
 (porosity, I_G and events per grain against the stress, the gradings at 1, 10, 50 and 100 MPa), NAME
 default compression; prints the table as Markdown.
 """
@@ -46,7 +48,7 @@ requires("compression_seeds", "numpy", "matplotlib")
 
 import numpy as np  # noqa: E402
 
-from post.seeds import change, resolved, statistics, write_csv  # noqa: E402
+from post.seeds import compare as compare_seeds, interval, resolved, statistics, t_quantile, welch_df, write_csv  # noqa: E402
 
 DECK_SEED = "15485863"
 STRESS = {"O": "sigma_z", "I": "p"}  # the loading axis each test is read against
@@ -180,23 +182,36 @@ def reference_of(key, reference):
 
 
 def mean_se(arrays):
-    """The mean and standard error over the runs at each point; NaN where fewer than two runs reach it."""
+    """The mean, standard error and count of the runs at each point; NaN where fewer than two runs reach it."""
     a = np.array(arrays)
     count = np.sum(np.isfinite(a), axis=0)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", RuntimeWarning)  # points that one run alone reaches
-        return np.nanmean(a, axis=0), np.nanstd(a, axis=0, ddof=1) / np.sqrt(count)
+        return np.nanmean(a, axis=0), np.nanstd(a, axis=0, ddof=1) / np.sqrt(count), count
 
 
 def largest_difference(reference, other, where):
-    """The mean curves' (or gradings') largest |difference| with its unpaired se there, the point
-    (where[i]), and the largest |difference| / se over the points with a spread."""
-    (m0, s0), (m1, s1) = reference, other
+    """The mean curves' (or gradings') largest |difference| with its unpaired se and Welch's df there,
+    the point (where[i]), and the largest |difference| / se over the points with a spread."""
+    (m0, s0, n0), (m1, s1, n1) = reference, other
     d, se = m1 - m0, np.hypot(s0, s1)
     i = int(np.nanargmax(np.abs(d)))
     spread = np.isfinite(d) & (se > 0)  # the coarsest sieve passes 100% in every run
     worst = float(np.max(np.abs(d[spread]) / se[spread])) if spread.any() else float("nan")
-    return float(d[i]), float(se[i]), float(where[i]), worst
+    df = welch_df(float(s0[i]), int(n0[i]), float(s1[i]), int(n1[i]))
+    return float(d[i]), float(se[i]), df, float(where[i]), worst
+
+
+def band(se, count):
+    """Half the 95% Student-t interval of each point's mean (df = runs - 1); NaN under two runs."""
+    q = np.array([t_quantile(n - 1) if n > 1 else np.nan for n in np.atleast_1d(count)])
+    return se * q
+
+
+def tested(change, se, df):
+    """A comparison's cells: change, se, df, its 95% interval and p, resolved."""
+    low, high, p = interval(change, se, df)
+    return dict(change=change, change_se=se, df=df, low=low, high=high, p=p, resolved=resolved(change, se, df))
 
 
 def compare(groups, reference):
@@ -217,35 +232,38 @@ def compare(groups, reference):
             stats = statistics(list(values.values()))
             row = dict(base, measure=m, seeds=stats[0], mean=stats[1], se=stats[3])
             if ref_values:
-                _, _, (dx, se), _ = change(ref_values, values)  # unpaired: the seeds do not pair
-                row.update(change=dx, change_se=se, resolved=resolved(dx, se))
+                c = compare_seeds(ref_values, values)
+                row.update(tested(c["change"], c["se"], c["df"]), design=c["design"])
             rows.append(row)
         if ref:
-            d, se, where, worst = largest_difference(mean_se([r["curve"] for r in ref.values()]),
-                                                     mean_se([r["curve"] for r in by_seed.values()]), GRID / 1e6)
-            rows.append(dict(base, measure="n_curve_largest", seeds=len(by_seed), at_MPa=where, change=d, change_se=se,
-                             resolved=resolved(d, se), largest_change_over_se=worst))
-            d, se, where, worst = largest_difference(mean_se([r["passing"] for r in ref.values()]),
-                                                     mean_se([r["passing"] for r in by_seed.values()]),
-                                                     next(iter(ref.values()))["sieves"])
-            rows.append(dict(base, measure="passing_largest", seeds=len(by_seed), at_mm=where, change=d, change_se=se,
-                             resolved=resolved(d, se), largest_change_over_se=worst))
+            d, se, df, where, worst = largest_difference(mean_se([r["curve"] for r in ref.values()]),
+                                                         mean_se([r["curve"] for r in by_seed.values()]), GRID / 1e6)
+            rows.append(dict(base, measure="n_curve_largest", seeds=len(by_seed), at_MPa=where, design="unpaired (Welch)",
+                             largest_change_over_se=worst, **tested(d, se, df)))
+            d, se, df, where, worst = largest_difference(mean_se([r["passing"] for r in ref.values()]),
+                                                         mean_se([r["passing"] for r in by_seed.values()]),
+                                                         next(iter(ref.values()))["sieves"])
+            rows.append(dict(base, measure="passing_largest", seeds=len(by_seed), at_mm=where, design="unpaired (Welch)",
+                             largest_change_over_se=worst, **tested(d, se, df)))
     return rows
 
 
 def markdown(rows, by_folder):
-    lines = ["| test | N |%s measure | seeds | mean +- se | change from the reference +- se | resolved |"
-             % (" setting |" if by_folder else ""), "|---|---|%s---|---|---|---|---|" % ("---|" if by_folder else "")]
+    lines = ["| test | N |%s measure | seeds | mean +- se | change from the reference +- se | 95%% interval | p | "
+             "resolved | design |" % (" setting |" if by_folder else ""),
+             "|---|---|%s---|---|---|---|---|---|---|---|" % ("---|" if by_folder else "")]
     for r in rows:
         if "mean" in r:
             value = "%.4g +- %.2g" % (r["mean"], r["se"]) if math.isfinite(r["se"]) else "%.4g" % r["mean"]
         else:
             value = ("at %.3g MPa" % r["at_MPa"]) if "at_MPa" in r else ("at %g mm" % r["at_mm"])
         delta = "%+.3g +- %.2g" % (r["change"], r["change_se"]) if "change" in r else ""
+        span = "%+.3g .. %+.3g" % (r["low"], r["high"]) if "low" in r and math.isfinite(r["low"]) else ""
+        p = "%.2g" % r["p"] if "p" in r and math.isfinite(r["p"]) else ""
         worst = " (largest \\|change\\|/se on it %.1f)" % r["largest_change_over_se"] if "largest_change_over_se" in r else ""
-        lines.append("| %s | %s |%s %s | %d | %s | %s | %s%s |" % (
-            r["test"], r["N"], " %s |" % r["folder"] if by_folder else "", r["measure"], r["seeds"], value, delta,
-            r.get("resolved", ""), worst))
+        lines.append("| %s | %s |%s %s | %d | %s | %s | %s | %s | %s%s | %s |" % (
+            r["test"], r["N"], " %s |" % r["folder"] if by_folder else "", r["measure"], r["seeds"], value, delta, span,
+            p, r.get("resolved", ""), worst, r.get("design", "")))
     return "\n".join(lines)
 
 
@@ -258,16 +276,18 @@ def figure(groups, path):
         for key in sorted((k for k in groups if k[0] == test), key=lambda k: (k[2], float(k[1]))):
             runs = list(groups[key].values())
             label = "%s-%s%s (%d seeds)" % (test, key[1], " " + key[2] if key[2] else "", len(runs))
-            m, se = mean_se([r["curve"] for r in runs])
+            m, se, n = mean_se([r["curve"] for r in runs])
             line, = axes[0, col].plot(GRID / 1e6, m, label=label)
-            axes[0, col].fill_between(GRID / 1e6, m - 2 * se, m + 2 * se, color=line.get_color(), alpha=0.25)
-            pm, pse = mean_se([r["passing"] for r in runs])
+            half = band(se, n)
+            axes[0, col].fill_between(GRID / 1e6, m - half, m + half, color=line.get_color(), alpha=0.25)
+            pm, pse, pn = mean_se([r["passing"] for r in runs])
             axes[1, col].plot(runs[0]["sieves"], pm, "o-", color=line.get_color(), label=label)
-            axes[1, col].fill_between(runs[0]["sieves"], pm - 2 * pse, pm + 2 * pse, color=line.get_color(), alpha=0.25)
+            half = band(pse, pn)
+            axes[1, col].fill_between(runs[0]["sieves"], pm - half, pm + half, color=line.get_color(), alpha=0.25)
         axes[0, col].set_xscale("log")
         axes[0, col].set_xlabel("vertical stress (MPa)" if test == "O" else "mean stress p' (MPa)")
         axes[0, col].set_ylabel("porosity n")
-        axes[0, col].set_title("%s: mean of the seeds, band 2 se" % ("oedometric" if test == "O" else "isotropic"))
+        axes[0, col].set_title("%s: mean of the seeds, band 95%% (t)" % ("oedometric" if test == "O" else "isotropic"))
         axes[1, col].set_xscale("log")
         axes[1, col].set_xlabel("size (mm)")
         axes[1, col].set_ylabel("percent passing at 100 MPa")
@@ -281,7 +301,7 @@ def figure(groups, path):
 
 def figure_settings(groups, path):
     """Each setting's mean over its seeds, a row a test: porosity, I_G and events per initial grain
-    against the stress (bands 2 se), and the gradings at 1, 10, 50 and 100 MPa (line style by level)."""
+    against the stress (95% t bands), and the gradings at 1, 10, 50 and 100 MPa (line style by level)."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -296,10 +316,11 @@ def figure_settings(groups, path):
             colour = None
             for ax, curves in zip(row[:3], ([r["curve"] for r in runs], [r["curves"]["I_G"] for r in runs],
                                             [r["curves"]["events"] for r in runs])):
-                m, se = mean_se(curves)
+                m, se, n = mean_se(curves)
                 line, = ax.plot(GRID / 1e6, m, color=colour, label=label)
                 colour = line.get_color()
-                ax.fill_between(GRID / 1e6, m - 2 * se, m + 2 * se, color=colour, alpha=0.25)
+                half = band(se, n)
+                ax.fill_between(GRID / 1e6, m - half, m + half, color=colour, alpha=0.25)
             for level in GSD_LEVELS:
                 passing = [r["gsd_levels"][level] for r in runs if level in r["gsd_levels"]]
                 if len(passing) == len(runs):
@@ -313,7 +334,7 @@ def figure_settings(groups, path):
                 ax.set_xscale("log")
                 ax.set_xlabel(axis)
         row[3].set_xlabel("size / N (mm)")
-        row[0].set_title("%s compression: mean of the seeds, bands 2 se" % ("oedometric" if test == "O" else "isotropic"),
+        row[0].set_title("%s compression: mean of the seeds, bands 95%% (t)" % ("oedometric" if test == "O" else "isotropic"),
                          loc="left")
         row[0].legend(fontsize=7)
         row[3].legend(fontsize=6, ncol=2)

@@ -33,6 +33,7 @@ import sys
 if not __package__:  # run as a file (python3 post/cpt_interpretation.py): the folder above post/ holds the package
     sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 from post import penetration_stats, requires  # noqa: E402
+from post.seeds import t_quantile  # noqa: E402
 
 P_A = 100.0  # kPa
 ZONES = [(1.31, 7), (2.05, 6), (2.60, 5), (2.95, 4), (3.60, 3), (float("inf"), 2)]
@@ -124,13 +125,15 @@ def draw(path, rows, K):
         members = [r for r in rows if r["case"] in cases]
         x = [float(r["sigma_v"]) / 1e3 for r in members]
         ax.loglog(x, [float(r["q_c_MPa"]) for r in members], "o", color=colour, alpha=0.4, ms=4)
-        ax.errorbar([x[0]], [stats["q_c_MPa"][1]], yerr=[2 * stats["q_c_MPa"][3]], fmt="s", color=colour, capsize=3,
+        n = stats["q_c_MPa"][0]
+        half = t_quantile(n - 1) * stats["q_c_MPa"][3] if n > 1 else 0.0
+        ax.errorbar([x[0]], [stats["q_c_MPa"][1]], yerr=[half], fmt="s", color=colour, capsize=3,
                     label=name if first else None)
     ax.set_xlabel("sigma'_v (kPa)")
     ax.set_ylabel("q_c (MPa)")
     ax.grid(alpha=0.3, which="both")
     ax.legend(fontsize=7, loc="lower right")
-    ax.set_title("q_c: each test, and the mean +- 2 se")
+    ax.set_title("q_c: each test, and the mean with its 95% t interval")
     fig.tight_layout()
     fig.savefig(path, dpi=120)
 

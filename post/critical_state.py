@@ -47,7 +47,7 @@ import sys
 if not __package__:  # run as a file (python3 post/critical_state.py): the folder above post/ holds the package
     sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 from post import requires  # noqa: E402
-from post.seeds import resolved, statistics  # noqa: E402
+from post.seeds import interval, resolved, statistics  # noqa: E402
 
 requires("critical_state", "numpy")
 
@@ -393,11 +393,13 @@ def paired_markdown(tests, max_dilatancy):
     angles = paired_angles(tests, max_dilatancy)
     if angles:
         lines += ["", "### phi_cs between cell pressures, paired by seed", "",
-                  "| variant | sample | path | p'_0 from (MPa) | to | seeds | change of phi_cs (deg) | resolved at 2 se |",
-                  "|---|---|---|---|---|---|---|---|"]
+                  "| variant | sample | path | p'_0 from (MPa) | to | seeds | change of phi_cs (deg) | 95% interval | "
+                  "resolved |", "|---|---|---|---|---|---|---|---|---|"]
         for variant, sample, path, lo, hi, seeds, d in angles:
-            lines.append("| %s | %s | %s | %g | %g | %d | %s | %s |"
-                         % (variant, sample, path, lo, hi, len(seeds), pm(d, 2), resolved(d[1], d[3])))
+            low, high, _ = interval(d[1], d[3], d[0] - 1)
+            span = "%+.2f .. %+.2f" % (low, high) if low == low else ""
+            lines.append("| %s | %s | %s | %g | %g | %d | %s | %s | %s |"
+                         % (variant, sample, path, lo, hi, len(seeds), pm(d, 2), span, resolved(d[1], d[3], d[0] - 1)))
     if max_dilatancy is not None:
         out = [t for t in tests if not at_critical_state(t, max_dilatancy)]
         lines += ["", "Left out of every fit and pairing (|dilatancy| at the end above %g): %s"

@@ -6,15 +6,16 @@ from the cone and the weak sand from Table 1's), the number of seeds, the mean o
 standard error, and the means of the events, the inertial numbers, the kinetic energy's share, the
 steps and the time; then, for --vary FIELD, the change of q_c between settings that differ in FIELD
 alone (a numeric field's values in turn; a named field's against its first value: crushing 0,
-dense, cone), with its standard error, and whether it is resolved at 2 standard errors; where both
+dense, cone), with its standard error, Welch's df, its 95% Student-t interval and p, and whether it
+is resolved (the interval excludes zero: post/seeds.py's one rule); where both
 ran the same seeds, the change paired by seed too (each seed's own difference, free of the chambers'
 scatter); for --fit-log2 FIELD, the slope of q_c against log2 FIELD over all the runs of the
 settings that differ in FIELD alone, one intercept per seed (ordinary least squares), with its
 standard error; --members lists the cases of each setting; --versus A B compares two sets of cases
 named by patterns (fnmatch: 'refined_N34_w10_s*' against 'rate_v0.25_s*'), settings that differ in
 more than one field (D_c / d50 with the velocity that keeps the inertial number, a refined chamber
-against a uniform one): the means, their difference with the unpaired standard error (Welch) and
-whether it is resolved at 2 standard errors, and a field of the study (--field, default q_c_MPa);
+against a uniform one): the means, their difference with the unpaired standard error (Welch), its
+interval and whether it is resolved, and a field of the study (--field, default q_c_MPa);
 --ratio A B gives B's mean over A's with its standard error, and each seed's own ratio where both ran
 it (the density effect: dense over loose); --fit-power FIELD the exponent of q_c against a numeric
 field (the stress exponent: log q_c against log sigma_v, a factor per seed) and, over three levels or
@@ -37,8 +38,8 @@ import sys
 
 if not __package__:  # run as a file (python3 post/penetration_stats.py): the folder above post/ holds the package
     sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-from post.seeds import number, statistics  # noqa: E402,F401
-from post.seeds import resolved as is_resolved  # noqa: E402  (the studies' one implementation; "one seed" without an se)
+from post.seeds import interval, number, statistics, welch_df  # noqa: E402,F401
+from post.seeds import resolved as is_resolved  # noqa: E402  (the studies' one rule: the 95% t interval)
 
 SETTING = ["density", "N", "crushing", "v", "width", "ranks", "distribution", "sigma_v", "fragment_density", "depth",
            "tip_shape", "sigma_lim0", "neighbor_style", "extra"]
@@ -86,6 +87,14 @@ def summarise(rows):
         stats[field] = statistics(values) if values else (0, float("nan"), float("nan"), float("nan"))
     stats["seeds"] = ",".join(r["seed"] for r in rows)
     return stats
+
+
+def verdict(change, se, df):
+    """A comparison's words: its 95% interval, p and whether it is resolved (post/seeds.py's rule)."""
+    low, high, p = interval(change, se, df)
+    if not math.isfinite(low):
+        return "resolved: one seed"
+    return "95%% interval %+.3g .. %+.3g, p %.2g, resolved: %s" % (low, high, p, is_resolved(change, se, df))
 
 
 def paired_change(first, second):
@@ -158,7 +167,7 @@ def print_table(table, markdown):
 
 def print_changes(table, seeded, field):
     at = SETTING.index(field)
-    print("\nq_c against %s (the others fixed): change, its standard error, resolved at 2 se" % field)
+    print("\nq_c against %s (the others fixed): change, its standard error, 95%% t interval, p, resolved" % field)
     for members in families(table, field):
         numeric = all(math.isfinite(number(m[at])) for m in members)
         # a numeric field (v, sigma_v): each value against the next; a named one (crushing,
@@ -166,14 +175,14 @@ def print_changes(table, seeded, field):
         for x, y in (zip(members, members[1:]) if numeric else ((members[0], m) for m in members[1:])):
             (nx, mx, _, ex), (ny, my, _, ey) = table[x]["q_c_MPa"], table[y]["q_c_MPa"]
             se = math.sqrt(ex ** 2 + ey ** 2)
-            resolved = is_resolved(my - mx, se)
-            print("%s: %s %s -> %s: %.2f -> %.2f MPa, change %+.2f +- %.2f (%+.0f%%), resolved: %s (%d and %d seeds)"
-                  % (label(x, (field,)), field, x[at], y[at], mx, my, my - mx, se, 100 * (my / mx - 1), resolved, nx, ny))
+            print("%s: %s %s -> %s: %.2f -> %.2f MPa, change %+.2f +- %.2f (%+.0f%%), %s (Welch, %d and %d seeds)"
+                  % (label(x, (field,)), field, x[at], y[at], mx, my, my - mx, se, 100 * (my / mx - 1),
+                     verdict(my - mx, se, welch_df(ex, nx, ey, ny)), nx, ny))
             paired = paired_change(seeded[x], seeded[y])
             if paired:
                 n, mean, _, se = paired
-                print("    paired by seed (the same chamber and strengths): change %+.2f +- %.2f, resolved: %s (%d seeds)"
-                      % (mean, se, is_resolved(mean, se), n))
+                print("    paired by seed (the same chamber and strengths): change %+.2f +- %.2f, %s (%d seeds)"
+                      % (mean, se, verdict(mean, se, n - 1), n))
 
 
 def fits(table, seeded, field, power=False):
@@ -194,10 +203,10 @@ def print_fit(table, seeded, field):
     at = SETTING.index(field)
     print("\nq_c against log2 %s (the others fixed), one intercept per seed: slope, its standard error" % field)
     for members, runs, seeds, slope, se in fits(table, seeded, field):
-        resolved = is_resolved(slope, se)
-        print("%s: %s = %s: %+.3f +- %.3f MPa per doubling of %s (%+.3f +- %.3f per halving), resolved: %s"
-              " (%d runs, %d seeds)" % (label(members[0], (field,)), field, ", ".join(m[at] for m in members),
-                                        slope, se, field, -slope, se, resolved, runs, seeds))
+        print("%s: %s = %s: %+.3f +- %.3f MPa per doubling of %s (%+.3f +- %.3f per halving), %s"
+              " (%d runs, %d seeds), df %d" % (label(members[0], (field,)), field, ", ".join(m[at] for m in members),
+                                               slope, se, field, -slope, se, verdict(slope, se, runs - seeds - 1),
+                                               runs, seeds, runs - seeds - 1))
 
 
 def print_power(table, seeded, field):
@@ -206,8 +215,9 @@ def print_power(table, seeded, field):
     at = SETTING.index(field)
     print("\nq_c against %s (the others fixed) as a power, one factor per seed: exponent, its standard error" % field)
     for members, runs, seeds, slope, se in fits(table, seeded, field, power=True):
-        print("%s: %s = %s: exponent %.3f +- %.3f (%d runs, %d seeds)"
-              % (label(members[0], (field,)), field, ", ".join(m[at] for m in members), slope, se, runs, seeds))
+        low, high, _ = interval(slope, se, runs - seeds - 1)
+        print("%s: %s = %s: exponent %.3f +- %.3f, 95%% interval %.3f .. %.3f (%d runs, %d seeds)"
+              % (label(members[0], (field,)), field, ", ".join(m[at] for m in members), slope, se, low, high, runs, seeds))
         if len(members) > 2:
             print_local_powers(seeded, members, at)
 
@@ -232,8 +242,8 @@ def print_local_powers(seeded, members, at):
         if len(common) < 2:
             continue
         n, mean, _, se = statistics([steps[k + 1][seed] - steps[k][seed] for seed in common])
-        print("    change from the step to %s to the next: %+.3f +- %.3f (paired, %d seeds), resolved: %s"
-              % (members[k + 1][at], mean, se, n, is_resolved(mean, se)))
+        print("    change from the step to %s to the next: %+.3f +- %.3f (paired, %d seeds), %s"
+              % (members[k + 1][at], mean, se, n, verdict(mean, se, n - 1)))
 
 
 def picked(rows, pattern, field):
@@ -250,18 +260,19 @@ def picked(rows, pattern, field):
 
 
 def print_ratio(rows, first, second, field):
-    """second's field over first's: the ratio of the means (unpaired) and the mean of each seed's own
-    ratio (paired, over the seeds both ran), each with its standard error, resolved from 1 at 2 se."""
+    """second's field over first's: the ratio of the means (unpaired, Welch's df of the two means) and
+    the mean of each seed's own ratio (paired, over the seeds both ran), each with its standard error
+    and its 95% interval, resolved from 1 where that interval excludes 1."""
     a, b = picked(rows, first, field), picked(rows, second, field)
-    r, se = ratio(statistics(list(a.values())), statistics(list(b.values())))
+    sa, sb = statistics(list(a.values())), statistics(list(b.values()))
+    r, se = ratio(sa, sb)
     print("\n%s: %s over %s" % (field, second, first))
-    print("  ratio of the means %.3f +- %.3f (unpaired, %d and %d seeds), resolved from 1: %s"
-          % (r, se, len(a), len(b), is_resolved(r - 1, se)))
+    print("  ratio of the means %.3f +- %.3f (unpaired, %d and %d seeds), from 1: %s"
+          % (r, se, len(a), len(b), verdict(r - 1, se, welch_df(sa[3], sa[0], sb[3], sb[0]))))
     common = [seed for seed in a if seed in b]
     if len(common) > 1:
         n, mean, _, se = statistics([b[seed] / a[seed] for seed in common])
-        print("  paired by seed: %.3f +- %.3f (%d seeds), resolved from 1: %s"
-              % (mean, se, n, is_resolved(mean - 1, se)))
+        print("  paired by seed: %.3f +- %.3f (%d seeds), from 1: %s" % (mean, se, n, verdict(mean - 1, se, n - 1)))
 
 
 def versus(rows, first, second, field):
@@ -278,8 +289,7 @@ def print_versus(rows, first, second, field):
     print("\n%s: %s against %s" % (field, second, first))
     for name, (n, mean, sd, s_e) in ((first, a), (second, b)):
         print("  %-28s %d seeds, mean %.4g, sd %.3g, se %.3g" % (name, n, mean, sd, s_e))
-    resolved = "resolved" if abs(change) > 2 * se else "not resolved"
-    print("  change %+.4g +- %.3g (unpaired), %s at 2 se" % (change, se, resolved))
+    print("  change %+.4g +- %.3g (unpaired, Welch), %s" % (change, se, verdict(change, se, welch_df(a[3], a[0], b[3], b[0]))))
 
 
 def main():

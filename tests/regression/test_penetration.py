@@ -823,8 +823,9 @@ def case_stats_fit_log2(liggghts, work):
 
 def case_stats_versus(liggghts, work):
     """--versus A B on stand-in studies of known means: B's q_c (2.0, 2.2, 2.4) against A's (1.0, 1.2, 1.4
-    and a second row of one seed, dropped) differ by +1.000 +- 0.163 (each se 0.2 / sqrt(3)), resolved;
-    B against a set of the same mean (1.9, 2.2, 2.5: se 0.173) by 0.000 +- 0.208, not resolved."""
+    and a second row of one seed, dropped) differ by +1.000 +- 0.163 (each se 0.2 / sqrt(3)): Welch's df
+    4, t 2.776, the 95% interval +0.547 .. +1.45, resolved; B against a set of the same mean (1.9, 2.2,
+    2.5: se 0.173) by 0.000 +- 0.208, df 3.49, interval -0.613 .. +0.613, not resolved."""
     del liggghts
     rows = [("a_s%d" % (k + 1), seed, q, {}) for k, (seed, q) in enumerate(zip(SEEDS, (1.0, 1.2, 1.4)))]
     rows += [("a_again_s1", SEEDS[0], 9.9, {})]
@@ -833,8 +834,8 @@ def case_stats_versus(liggghts, work):
     study = write_study(os.path.join(work, "versus.csv"), rows)
     _, _, rest, _ = run_stats(study, "--versus", "a_*", "b_*", "--versus", "b_*", "c_*")
     changes = [line.strip() for line in rest if line.strip().startswith("change")]
-    check(changes == ["change +1 +- 0.163 (unpaired), resolved at 2 se",
-                      "change +0 +- 0.208 (unpaired), not resolved at 2 se"],
+    check(changes == ["change +1 +- 0.163 (unpaired, Welch), 95% interval +0.547 .. +1.45, p 0.0036, resolved: yes",
+                      "change +0 +- 0.208 (unpaired, Welch), 95% interval -0.613 .. +0.613, p 1, resolved: no"],
           "b against a: %s; c against b: %s" % tuple(changes + ["?", "?"])[:2])
 
 
@@ -894,9 +895,10 @@ def case_stats_ratio_power(liggghts, work):
     """--ratio and --fit-power on stand-in studies of known values. Dense (2.0, 2.2, 2.4) over loose
     (1.0, 1.2, 1.4) on the same seeds: the ratio of the means 2.2 / 1.2 = 1.833, its standard error
     1.833 ((0.1155 / 1.2)^2 + (0.1155 / 2.2)^2)^0.5 = 0.201; each seed's own ratio (2, 1.833, 1.714)
-    1.849 +- 0.083, both resolved from 1. q_c = a_seed sigma_v^0.6 2^e at 100, 200, 400 kPa, e = (+0.1,
+    1.849 +- 0.083; from 1, the 95% intervals +0.275 .. +1.39 (Welch's df 4) and +0.493 .. +1.21 (df 2):
+    both resolved. q_c = a_seed sigma_v^0.6 2^e at 100, 200, 400 kPa, e = (+0.1,
     -0.2, +0.1) in each seed (orthogonal to the intercepts and to log2 sigma_v): the exponent 0.600 +-
-    0.077, as --fit-log2's slope on the same ladder; between neighbouring levels 0.6 - 0.3 = 0.300 and
+    0.077, as --fit-log2's slope on the same ladder (df 9 - 3 - 1 = 5: 0.401 .. 0.799); between neighbouring levels 0.6 - 0.3 = 0.300 and
     0.6 + 0.3 = 0.900 in every seed, a change of +0.600 +- 0.000, resolved."""
     del liggghts
     rows = [("loose_s%d" % (k + 1), seed, q, {"density": "loose"}) for k, (seed, q) in enumerate(zip(SEEDS, (1.0, 1.2, 1.4)))]
@@ -907,13 +909,17 @@ def case_stats_ratio_power(liggghts, work):
     study = write_study(os.path.join(work, "ratio.csv"), rows)
     _, _, rest, _ = run_stats(study, "--ratio", "loose_*", "dense_*", "--fit-power", "sigma_v")
     text = "\n".join(rest)
-    check("ratio of the means 1.833 +- 0.201 (unpaired, 3 and 3 seeds), resolved from 1: yes" in text
-          and "paired by seed: 1.849 +- 0.083 (3 seeds), resolved from 1: yes" in text,
+    check("ratio of the means 1.833 +- 0.201 (unpaired, 3 and 3 seeds), from 1: 95% interval +0.275 .. +1.39, p 0.014, "
+          "resolved: yes" in text
+          and "paired by seed: 1.849 +- 0.083 (3 seeds), from 1: 95% interval +0.493 .. +1.21, p 0.0094, resolved: yes" in text,
           "dense over loose: 1.833 +- 0.201 unpaired, 1.849 +- 0.083 paired")
-    powers = re.findall(r"sigma_v = 1e5, 2e5, 4e5: exponent (\S+) \+- (\S+) \((\d+) runs, (\d+) seeds\)", text)
-    check(powers == [("0.600", "0.077", "9", "3")], "q_c against sigma_v: exponent, se, runs, seeds %s" % powers)
+    powers = re.findall(r"sigma_v = 1e5, 2e5, 4e5: exponent (\S+) \+- (\S+), 95% interval (\S+) \.\. (\S+) "
+                        r"\((\d+) runs, (\d+) seeds\)", text)
+    check(powers == [("0.600", "0.077", "0.401", "0.799", "9", "3")],
+          "q_c against sigma_v: exponent, se, interval, runs, seeds %s" % powers)
     local = re.findall(r"(\S+) -> (\S+): exponent (\S+) \+- (\S+) \((\d+) seeds\)", text)
-    change = re.findall(r"change from the step to 2e5 to the next: (\S+) \+- (\S+) \(paired, 3 seeds\), resolved: (\w+)", text)
+    change = re.findall(r"change from the step to 2e5 to the next: (\S+) \+- (\S+) \(paired, 3 seeds\), .*resolved: (\w+)",
+                        text)
     check(local == [("1e5", "2e5", "0.300", "0.000", "3"), ("2e5", "4e5", "0.900", "0.000", "3")]
           and change == [("+0.600", "0.000", "yes")],
           "local exponents %s, their change %s" % (local, change))

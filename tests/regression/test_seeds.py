@@ -105,12 +105,15 @@ def compression_seeds(out, *args, fails=False):
 
 
 def case_upscaling(liggghts, work):
-    """post/compression_seeds.py on stand-in O runs at N = 1 and 2, three seeds each. N = 1's porosity
-    is 0.4 - 0.05 log10(sigma / MPa) plus the seed's offset (-0.01, 0, +0.01: se 0.00577). N = 2 adds
-    0.003 + 0.002 log10(sigma / MPa) to it, a change that grows to 0.007 at 100 MPa and is never
-    resolved against the seeds' spread (unpaired: se 0.00816); its events per grain are 0.30 where
-    N = 1's are 0.20, with a spread of 0.01: resolved. The seed comes from setting.csv or the folder's
-    _s<seed>. A second run of one test, N and seed is refused by name."""
+    """post/compression_seeds.py on stand-in O runs at N = 1, 1.5 and 2, three seeds each. N = 1's
+    porosity is 0.4 - 0.05 log10(sigma / MPa) plus the seed's offset (-0.01, 0, +0.01: se 0.00577).
+    N = 2 adds 0.003 + 0.002 log10(sigma / MPa) to it, a change that grows to 0.007 at 100 MPa: its
+    seeds keep their offsets (they correlate with N = 1's, r 1), so the change is paired and every
+    seed's own difference is +0.007: resolved, where unpaired (se 0.00816, Welch's df 4) it would not
+    be. N = 1.5 adds the same but its seeds' offsets run the other way (+0.01, 0, -0.01: r -1):
+    unpaired, +0.007 +- 0.00816, 95% interval -0.0157 .. +0.0297, not resolved. The events per grain
+    are 0.30 at N = 2 where N = 1's are 0.20, with a spread of 0.01: resolved. The seed comes from
+    setting.csv or the folder's _s<seed>. A second run of one test, N and seed is refused by name."""
     del liggghts
     offsets = {"11": -0.01, "22": 0.0, "33": 0.01}
     folders = []
@@ -121,16 +124,24 @@ def case_upscaling(liggghts, work):
         two = os.path.join(work, "N2_run%d" % k)  # its seed only in setting.csv
         stand_in_run(two, "O", "2", lambda x, o=off: 0.4 - 0.05 * x + o + 0.003 + 0.002 * x, 300 + 10 * (k - 1),
                      setting_seed=seed)
-        folders += [one, two]
+        reversed_seed = os.path.join(work, "O1.5_s%s" % seed)
+        stand_in_run(reversed_seed, "O", "1.5", lambda x, o=off: 0.4 - 0.05 * x - o + 0.003 + 0.002 * x, 250)
+        folders += [one, two, reversed_seed]
     out = os.path.join(work, "out")
     compression_seeds(out, "--name", "upscaling", *folders)
     with open(os.path.join(out, "upscaling_seeds.csv")) as f:
         rows = dict(((r["N"], r["measure"]), r) for r in csv.DictReader(f))
     n100 = rows[("2", "n_100MPa")]
-    check(abs(float(n100["change"]) - 0.007) < 1e-5 and abs(float(n100["change_se"]) - 0.0081650) < 1e-5
-          and n100["resolved"] == "no" and n100["seeds"] == "3",
-          "n at 100 MPa: change %s +- %s (%s), expected +0.007 +- 0.00816, not resolved"
-          % (n100["change"], n100["change_se"], n100["resolved"]))
+    check(abs(float(n100["change"]) - 0.007) < 1e-5 and float(n100["change_se"]) < 1e-9 and n100["resolved"] == "yes"
+          and n100["seeds"] == "3" and n100["design"] == "paired (3 seeds, r 1.00)",
+          "N = 2, n at 100 MPa: change %s +- %s, %s: %s" % (n100["change"], n100["change_se"], n100["design"],
+                                                          n100["resolved"]))
+    n15 = rows[("1.5", "n_100MPa")]
+    check(abs(float(n15["change"]) - 0.007) < 1e-5 and abs(float(n15["change_se"]) - 0.0081650) < 1e-5
+          and abs(float(n15["df"]) - 4) < 1e-9 and abs(float(n15["low"]) + 0.01567) < 1e-4
+          and n15["resolved"] == "no" and n15["design"].startswith("unpaired (Welch, r -1.00"),
+          "N = 1.5, n at 100 MPa: change %s +- %s, df %s, interval %s .. %s, %s: %s"
+          % (n15["change"], n15["change_se"], n15["df"], n15["low"], n15["high"], n15["design"], n15["resolved"]))
     n1 = rows[("2", "n_1MPa")]
     check(abs(float(n1["change"]) - 0.003) < 1e-5, "n at 1 MPa: change %s, expected +0.003" % n1["change"])
     curve = rows[("2", "n_curve_largest")]
@@ -181,6 +192,44 @@ def case_readings(liggghts, work):
     proc = compression_seeds(out, *folders, fails=True)
     check(proc.returncode != 0 and "with seed" in proc.stderr, "the readings without --by-folder refused: %s" % proc.stderr[-200:])
 
+
+
+def case_t_rule(liggghts, work):
+    """The 95% Student-t rule. Three seeds whose paired change is +0.3 +- 0.115 (t = 2.6): 2 standard
+    errors would call it resolved; the t interval (df 2, 4.30 se) is -0.197 .. +0.797, p 0.12: not
+    resolved. Five seeds with the same mean change, +0.3 +- 0.0707 (t = 4.24, df 4, 2.78 se): resolved,
+    p 0.013. Pairing: the two sides correlate over the common seeds (r 0.99). A setting that shares no
+    seed with the reference is compared unpaired, Welch: the reference's five seeds (variance 0.625)
+    and its three (variance 1) give df (0.125 + 1/3)^2 / (0.125^2 / 4 + (1/3)^2 / 2) = 3.53.
+    Holm's correction of p = 0.01, 0.04, 0.03, 0.2 gives 0.04, 0.09, 0.09, 0.2."""
+    del liggghts
+    ref, rows = (1.0, 2.0, 3.0, 1.5, 2.5), []
+    for k, (seed, d) in enumerate(zip(SEEDS, (0.1, 0.3, 0.5, 0.2, 0.4))):
+        rows.append(("ref_%s" % seed, "1", "0.1", seed, ref[k], 100))
+        if k < 3:
+            rows.append(("three_%s" % seed, "2", "0.1", seed, ref[k] + d, 100))
+        rows.append(("five_%s" % seed, "3", "0.1", seed, ref[k] + d, 100))
+    for k, seed in enumerate(("66", "77", "88")):
+        rows.append(("other_%s" % seed, "4", "0.1", seed, (1.0, 2.0, 3.0)[k] + 1.0, 100))
+    changes, _ = run(work, study(os.path.join(work, "study.csv"), rows), "--reference", "N=1")
+    three = changes[("N=2 L_R=0.1", "porosity")]
+    check((three["paired_change"], three["paired_df"], three["paired_interval"], three["paired_p"],
+           three["paired_resolved"]) == ("+0.3", "2", "-0.1968 .. +0.7968", "0.122", "no (3)")
+          and float(three["paired_change"]) > 2 * float(three["paired_se"]),
+          "three seeds: +0.3 +- %s paired, beyond 2 se, yet its 95%% interval %s (p %s): %s"
+          % (three["paired_se"], three["paired_interval"], three["paired_p"], three["paired_resolved"]))
+    five = changes[("N=3 L_R=0.1", "porosity")]
+    check((five["paired_df"], five["paired_p"], five["paired_resolved"]) == ("4", "0.0132", "yes (5)")
+          and float(five["paired_r"]) > 0.99,
+          "five seeds: +0.3 +- %s, interval %s, p %s: %s; r %s" % (five["paired_se"], five["paired_interval"],
+                                                                 five["paired_p"], five["paired_resolved"], five["paired_r"]))
+    other = changes[("N=4 L_R=0.1", "porosity")]
+    check(other["paired_change"] == "" and other["change_df"] == "3.53",
+          "no common seed: unpaired, Welch's df %s" % other["change_df"])
+    sys.path.insert(0, ROOT)
+    from post.seeds import holm
+    adjusted = [round(p, 12) for p in holm([0.01, 0.04, 0.03, 0.2])]
+    check(adjusted == [0.04, 0.09, 0.09, 0.2], "Holm: %s" % adjusted)
 
 if __name__ == "__main__":
     test_main(globals(), sys.argv[1:])
