@@ -29,6 +29,7 @@ TOOLS = {
     "crush-ring-stress": "ring_stress",
     "crush-seeds": "seeds",
     "crush-summary": "summary",
+    "crush-tables": "tables",
 }
 
 HERE = os.path.dirname(os.path.abspath(__file__))

@@ -1,0 +1,159 @@
+#!/usr/bin/python3
+"""The results tables written from their CSVs into the pages, never typed: each table of TABLES is
+built from the CSVs beside it in doc/ and stands in its page between two markers,
+
+    <!-- table NAME: written by crush-tables from CSV; do not edit -->
+    ...
+    <!-- end table NAME -->
+
+    post/tables.py [--check] [--doc DIR] [NAME ...]
+
+Without --check it rewrites every named table (default: all) in its page. With --check it writes
+nothing and exits 1 naming each table whose page differs from what its CSVs give (the test suite
+runs it on doc/). Statistics by post/seeds.py's one rule: means with their 95% Student-t interval
+over the seeds, changes resolved where that interval excludes zero.
+
+Tables:
+  table3   doc/results.md, from doc/table3_runs.csv (a row a run: test, N, seed, ranks, initial and
+           final particles, events, seconds; scripts/table3_runs.sh adds them): Table 3 of Ciantia et
+           al. (2014) side by side with the runs, every row over its seeds.
+  table3_io  doc/results.md, from the same CSV: isotropic minus oedometric events per initial grain,
+           paired by seed at each N, against the paper's.
+"""
+import argparse
+import csv
+import os
+import re
+import statistics as py_statistics
+import sys
+
+if not __package__:  # run as a file (python3 post/tables.py): the folder above post/ holds the package
+    sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+from post.seeds import compare, interval, statistics  # noqa: E402
+
+DOC = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "doc")
+
+# Table 3 of Ciantia et al. (2014): N_i, N_e, crushing events, model run (min); the paper's E-N are
+# the oedometric tests, O-N here.
+PAPER = {("O", "2"): (1304, 4372, 236, 31), ("O", "1.5"): (3084, 9974, 530, 67), ("O", "1"): (10397, 37658, 2097, 183),
+         ("I", "2"): (1304, 5230, 302, 29), ("I", "1.5"): (3084, 10819, 595, 67), ("I", "1"): (10397, 40778, 2337, 203)}
+ORDER = [("O", "2"), ("O", "1.5"), ("O", "1"), ("I", "2"), ("I", "1.5"), ("I", "1")]
+
+
+def read_rows(path):
+    with open(path) as f:
+        return list(csv.DictReader(f))
+
+
+def runs_by_test(rows):
+    """{(test, N): {seed: row}} of Table 3's runs (the first row of a seed kept)."""
+    out = {}
+    for r in rows:
+        out.setdefault((r["test"], r["N"]), {}).setdefault(r["seed"], r)
+    return out
+
+
+def mean_interval(values, digits=0):
+    """'mean (low - high)' with the 95% t interval of the mean, or the value alone for one run."""
+    n, mean, _, se = statistics(values)
+    if n < 2:
+        return "%.*f" % (digits, mean)
+    low, high, _ = interval(mean, se, n - 1)
+    return "%.*f (%.*f .. %.*f)" % (digits, mean, digits, low, digits, high)
+
+
+def against_paper(values, paper):
+    """The runs' mean over the paper's value, in percent, with its 95% t interval."""
+    return mean_interval([100.0 * (v / paper - 1.0) for v in values])
+
+
+def table3(doc):
+    runs = runs_by_test(read_rows(os.path.join(doc, "table3_runs.csv")))
+    lines = ["| test | seeds | N_i | N_e | events | events / N_i (%) | paper N_i, N_e, events | N_e vs paper (%) | "
+             "events vs paper (%) | runtime (s, median; ranks) | paper (min) |",
+             "|---|---|---|---|---|---|---|---|---|---|---|"]
+    for key in ORDER:
+        p_ni, p_ne, p_events, p_minutes = PAPER[key]
+        seeds = runs.get(key, {})
+        name = "%s-%s" % key
+        if not seeds:
+            lines.append("| %s | 0 | not run | | | | %d, %d, %d | | | | %d |" % (name, p_ni, p_ne, p_events, p_minutes))
+            continue
+        rows = list(seeds.values())
+        ni = [float(r["initial_particles"]) for r in rows]
+        ne = [float(r["final_particles"]) for r in rows]
+        events = [float(r["events"]) for r in rows]
+        share = [100.0 * e / n for e, n in zip(events, ni)]
+        seconds = py_statistics.median(float(r["seconds"]) for r in rows)
+        ranks = "/".join(sorted({r["ranks"] for r in rows}))
+        lines.append("| %s | %d | %s | %s | %s | %s | %d, %d, %d | %s | %s | %.0f; %s | %d |" % (
+            name, len(rows), mean_interval(ni), mean_interval(ne), mean_interval(events), mean_interval(share, 1),
+            p_ni, p_ne, p_events, against_paper(ne, p_ne), against_paper(events, p_events), seconds, ranks, p_minutes))
+    return "\n".join(lines)
+
+
+def table3_io(doc):
+    runs = runs_by_test(read_rows(os.path.join(doc, "table3_runs.csv")))
+    lines = ["| N | seeds paired | I - O events per initial grain | 95% interval | p | resolved | design | paper |",
+             "|---|---|---|---|---|---|---|---|"]
+    for n in ("2", "1.5", "1"):
+        o, i = runs.get(("O", n), {}), runs.get(("I", n), {})
+        paper = (PAPER[("I", n)][2] - PAPER[("O", n)][2]) / float(PAPER[("O", n)][0])
+        per_grain = lambda r: float(r["events"]) / float(r["initial_particles"])  # noqa: E731
+        common = [s for s in o if s in i]
+        if not common:
+            lines.append("| %s | 0 | not run | | | | | %+.4f |" % (n, paper))
+            continue
+        c = compare(dict((s, per_grain(o[s])) for s in o), dict((s, per_grain(i[s])) for s in i))
+        span = "%+.4f .. %+.4f" % (c["low"], c["high"]) if c["low"] == c["low"] else ""
+        p = "%.2g" % c["p"] if c["p"] == c["p"] else ""
+        lines.append("| %s | %d | %+.4f +- %.4f | %s | %s | %s | %s | %+.4f |"
+                     % (n, len(common), c["change"], c["se"], span, p, c["resolved"], c["design"], paper))
+    return "\n".join(lines)
+
+
+TABLES = {"table3": ("results.md", table3), "table3_io": ("results.md", table3_io)}
+
+
+def markers(name):
+    return ("<!-- table %s: written by crush-tables from CSV; do not edit -->" % name, "<!-- end table %s -->" % name)
+
+
+def placed(text, name, table):
+    """The page's text with the table between its markers; None where the page has no markers."""
+    begin, end = markers(name)
+    pattern = re.compile(re.escape(begin) + r"\n.*?" + re.escape(end), re.S)
+    if not pattern.search(text):
+        return None
+    return pattern.sub(lambda _: begin + "\n" + table + "\n" + end, text, count=1)
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("names", nargs="*", help="tables to write (default: all)")
+    parser.add_argument("--check", action="store_true", help="write nothing; exit 1 if a page differs from its CSVs")
+    parser.add_argument("--doc", default=DOC, help="the folder of the pages and their CSVs (default doc/)")
+    a = parser.parse_args(argv)
+    unknown = [n for n in a.names if n not in TABLES]
+    if unknown:
+        sys.exit("tables.py: no table %s (tables: %s)" % (", ".join(unknown), ", ".join(TABLES)))
+    stale = []
+    for name in a.names or list(TABLES):
+        page, build = TABLES[name]
+        path = os.path.join(a.doc, page)
+        text = open(path).read()
+        new = placed(text, name, build(a.doc))
+        if new is None:
+            sys.exit("tables.py: %s has no markers of table %s (%s)" % (path, name, " ... ".join(markers(name))))
+        if new != text:
+            stale.append("%s in %s" % (name, page))
+            if not a.check:
+                with open(path, "w") as f:
+                    f.write(new)
+    if a.check and stale:
+        sys.exit("tables.py: written by hand or stale (run post/tables.py): %s" % "; ".join(stale))
+    print("%s: %s" % ("stale" if stale else "up to date", ", ".join(stale) if stale else ", ".join(a.names or TABLES)))
+
+
+if __name__ == "__main__":
+    main()
