@@ -7,6 +7,10 @@ built from the CSVs beside it in doc/ and stands in its page between two markers
     <!-- end table NAME -->
 
     post/tables.py [--check] [--doc DIR] [NAME ...]
+    post/tables.py --add-run RUNTIMES.csv TEST:SEED [--doc DIR]
+
+--add-run adds the row of one finished run of scripts/fontainebleau_runs.sh (its line of the runner's
+runtimes.csv, and its history beside it in <TEST>_s<SEED>/) to doc/table3_runs.csv, once.
 
 Without --check it rewrites every named table (default: all) in its page. With --check it writes
 nothing and exits 1 naming each table whose page differs from what its CSVs give (the test suite
@@ -15,10 +19,12 @@ over the seeds, changes resolved where that interval excludes zero.
 
 Tables:
   table3   doc/results.md, from doc/table3_runs.csv (a row a run: test, N, seed, ranks, initial and
-           final particles, events, seconds; scripts/table3_runs.sh adds them): Table 3 of Ciantia et
-           al. (2014) side by side with the runs, every row over its seeds.
+           final particles, events, seconds, and from its history the events at the first load and
+           where the mean stress p' first reaches 10 and 50 MPa; scripts/table3_runs.sh adds them):
+           Table 3 of Ciantia et al. (2014) side by side with the runs, every row over its seeds.
   table3_io  doc/results.md, from the same CSV: isotropic minus oedometric events per initial grain,
-           paired by seed at each N, against the paper's.
+           paired by seed at each N, at the tests' ends (the paper's comparison), at the first load
+           and at equal mean stress p' (10 and 50 MPa: the oedometer reaches p' of about 56 MPa).
 """
 import argparse
 import csv
@@ -94,22 +100,56 @@ def table3(doc):
 
 def table3_io(doc):
     runs = runs_by_test(read_rows(os.path.join(doc, "table3_runs.csv")))
-    lines = ["| N | seeds paired | I - O events per initial grain | 95% interval | p | resolved | design | paper |",
-             "|---|---|---|---|---|---|---|---|"]
+    lines = ["| N | where | seeds paired | I - O events per initial grain | 95% interval | p | resolved | design | "
+             "paper |", "|---|---|---|---|---|---|---|---|---|"]
     for n in ("2", "1.5", "1"):
         o, i = runs.get(("O", n), {}), runs.get(("I", n), {})
         paper = (PAPER[("I", n)][2] - PAPER[("O", n)][2]) / float(PAPER[("O", n)][0])
-        per_grain = lambda r: float(r["events"]) / float(r["initial_particles"])  # noqa: E731
         common = [s for s in o if s in i]
         if not common:
-            lines.append("| %s | 0 | not run | | | | | %+.4f |" % (n, paper))
+            lines.append("| %s | the tests' ends | 0 | not run | | | | | %+.4f |" % (n, paper))
             continue
-        c = compare(dict((s, per_grain(o[s])) for s in o), dict((s, per_grain(i[s])) for s in i))
-        span = "%+.4f .. %+.4f" % (c["low"], c["high"]) if c["low"] == c["low"] else ""
-        p = "%.2g" % c["p"] if c["p"] == c["p"] else ""
-        lines.append("| %s | %d | %+.4f +- %.4f | %s | %s | %s | %s | %+.4f |"
-                     % (n, len(common), c["change"], c["se"], span, p, c["resolved"], c["design"], paper))
+        for column, where in (("events", "the tests' ends"), ("events_first_load", "the first load"),
+                              ("events_p10MPa", "p' = 10 MPa"), ("events_p50MPa", "p' = 50 MPa")):
+            per_grain = lambda r: float(r[column]) / float(r["initial_particles"])  # noqa: E731
+            c = compare(dict((s, per_grain(o[s])) for s in o if o[s].get(column)),
+                        dict((s, per_grain(i[s])) for s in i if i[s].get(column)))
+            span = "%+.4f .. %+.4f" % (c["low"], c["high"]) if c["low"] == c["low"] else ""
+            p = "%.2g" % c["p"] if c["p"] == c["p"] else ""
+            lines.append("| %s | %s | %d | %+.4f +- %.4f | %s | %s | %s | %s | %s |"
+                         % (n, where, c["pairs"], c["change"], c["se"], span, p, c["resolved"], c["design"],
+                            "%+.4f" % paper if column == "events" else ""))
     return "\n".join(lines)
+
+
+def history_events(path):
+    """From a run's history: the events at its first row (the first load) and where the mean stress
+    p' first reaches 10 and 50 MPa ('' where it never does)."""
+    rows = list(csv.DictReader(open(path)))
+    first_at = lambda target: next((r["events"] for r in rows if float(r["p"]) >= target), "")  # noqa: E731
+    return {"events_first_load": rows[0]["events"], "events_p10MPa": first_at(1e7), "events_p50MPa": first_at(5e7)}
+
+
+def add_run(runtimes, spec, doc):
+    """Adds one run's row to doc/table3_runs.csv (once): its line of the runner's runtimes.csv and the
+    events of its history (the run's folder beside runtimes.csv, as fontainebleau_runs.sh names it)."""
+    test, seed = spec.split(":")
+    row = next((r for r in read_rows(runtimes) if r["test"] == spec), None)
+    if row is None:
+        sys.exit("tables.py: %s has no row %s" % (runtimes, spec))
+    history = os.path.join(os.path.dirname(runtimes), "%s_s%s" % (test, seed), "history_%s.csv" % test)
+    new = {"test": test[0], "N": test[1:], "seed": seed, "ranks": row["ranks"],
+           "initial_particles": row["initial_particles"], "final_particles": row["final_particles"],
+           "events": row["events"], "seconds": row["seconds"]}
+    new.update(history_events(history))
+    table = os.path.join(doc, "table3_runs.csv")
+    rows = read_rows(table) if os.path.exists(table) else []
+    if any((r["test"], r["N"], r["seed"]) == (new["test"], new["N"], new["seed"]) for r in rows):
+        return
+    with open(table, "w", newline="") as f:
+        writer = csv.DictWriter(f, fieldnames=list(new), lineterminator="\n")
+        writer.writeheader()
+        writer.writerows(rows + [new])
 
 
 TABLES = {"table3": ("results.md", table3), "table3_io": ("results.md", table3_io)}
@@ -133,7 +173,12 @@ def main(argv=None):
     parser.add_argument("names", nargs="*", help="tables to write (default: all)")
     parser.add_argument("--check", action="store_true", help="write nothing; exit 1 if a page differs from its CSVs")
     parser.add_argument("--doc", default=DOC, help="the folder of the pages and their CSVs (default doc/)")
+    parser.add_argument("--add-run", nargs=2, metavar=("RUNTIMES", "TEST:SEED"),
+                        help="add a finished run's row to table3_runs.csv")
     a = parser.parse_args(argv)
+    if a.add_run:
+        add_run(a.add_run[0], a.add_run[1], a.doc)
+        return
     unknown = [n for n in a.names if n not in TABLES]
     if unknown:
         sys.exit("tables.py: no table %s (tables: %s)" % (", ".join(unknown), ", ".join(TABLES)))

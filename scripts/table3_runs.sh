@@ -12,26 +12,10 @@ out=${1:-$here/runs/table3}
 shift || true
 tests=${*:-O2 I2 O1.5 I1.5 O1 I1}
 seeds=${SEEDS:-15485863 179424673 275604541 1299709 373587883}
-csv=$here/doc/table3_runs.csv
 for t in $tests; do
   for s in $seeds; do
     PLOT=true bash "$here/scripts/fontainebleau_runs.sh" "$out" "$t:$s"
-    # the row of this run, once, from the runner's runtimes.csv
-    /usr/bin/python3 - "$out/runtimes.csv" "$csv" "$t:$s" <<'PY'
-import csv, os, sys
-runtimes, table, spec = sys.argv[1:]
-row = next(r for r in csv.DictReader(open(runtimes)) if r["test"] == spec)
-test, seed = spec.split(":")
-new = {"test": test[0], "N": test[1:], "seed": seed, "ranks": row["ranks"], "initial_particles": row["initial_particles"],
-       "final_particles": row["final_particles"], "events": row["events"], "seconds": row["seconds"]}
-rows = list(csv.DictReader(open(table))) if os.path.exists(table) else []
-if not any((r["test"], r["N"], r["seed"]) == (new["test"], new["N"], new["seed"]) for r in rows):
-    rows.append(new)
-    with open(table, "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=list(new), lineterminator="\n")
-        w.writeheader()
-        w.writerows(rows)
-PY
+    /usr/bin/python3 "$here/post/tables.py" --add-run "$out/runtimes.csv" "$t:$s"
   done
 done
 /usr/bin/python3 "$here/post/tables.py" table3 table3_io
