@@ -22,6 +22,11 @@ Tables:
            final particles, events, seconds, and from its history the events at the first load and
            where the mean stress p' first reaches 10 and 50 MPa; scripts/table3_runs.sh adds them):
            Table 3 of Ciantia et al. (2014) side by side with the runs, every row over its seeds.
+  readings  doc/results.md, from doc/readings_runs.csv (post/compression_seeds.py's runs of
+           scripts/strength_readings.sh): each reading of the strength draw and test, its measures'
+           means over the seeds with their 95% t intervals.
+  readings_changes  doc/results.md, from the same CSV: each reading against the decks' (clipped),
+           measure by measure, by post/seeds.py's rule, and Holm's correction over the table.
   table3_io  doc/results.md, from the same CSV: isotropic minus oedometric events per initial grain,
            paired by seed at each N, at the tests' ends (the paper's comparison), at the first load
            and at equal mean stress p' (10 and 50 MPa: the oedometer reaches p' of about 56 MPa).
@@ -35,7 +40,7 @@ import sys
 
 if not __package__:  # run as a file (python3 post/tables.py): the folder above post/ holds the package
     sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-from post.seeds import compare, interval, statistics  # noqa: E402
+from post.seeds import compare, holm, interval, statistics  # noqa: E402
 
 DOC = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "doc")
 
@@ -122,6 +127,67 @@ def table3_io(doc):
     return "\n".join(lines)
 
 
+# The readings of the strength draw (scripts/strength_readings.sh), the decks' first; their measures.
+READINGS = [("clipped", "clipped (the decks')"), ("normal", "normal"), ("none", "none"),
+            ("matched_0.88GPa", "matched (`normal`, sigma_lim0 0.88 GPa)")]
+READING_MEASURES = [("events_per_grain_1MPa", "events / N_i by 1 MPa", 3), ("events_per_grain", "events / N_i at 100 MPa", 3),
+                    ("I_G_first_load", "I_G after the first load", 3), ("I_G_100MPa", "I_G at 100 MPa", 3),
+                    ("n_1MPa", "n at 1 MPa", 4), ("n_10MPa", "n at 10 MPa", 3), ("n_100MPa", "n at 100 MPa", 3),
+                    ("yield_MPa", "yield stress (MPa)", 1), ("pass_0.1", "passing 0.1 mm at 100 MPa (%)", 1)]
+
+
+def reading_values(rows, folder, test, column):
+    """{seed: value} of one reading, test and measure (empty cells left out)."""
+    return dict((r["seed"], float(r[column])) for r in rows
+                if r["folder_name"] == folder and r["test"] == test and r.get(column, "") not in ("", "nan"))
+
+
+def cell(values, digits):
+    """'mean (low .. high)' over the seeds, with '[n]' where fewer than the reading's runs have a value."""
+    n, mean, _, se = statistics(list(values))
+    if n < 2:
+        return "%.*f" % (digits, mean) if n else ""
+    low, high, _ = interval(mean, se, n - 1)
+    return "%.*f (%.*f .. %.*f)" % (digits, mean, digits, low, digits, high)
+
+
+def readings(doc):
+    rows = read_rows(os.path.join(doc, "readings_runs.csv"))
+    lines = ["| reading | test | seeds | " + " | ".join(label for _, label, _ in READING_MEASURES) + " |",
+             "|" + "---|" * (3 + len(READING_MEASURES))]
+    for test in ("O", "I"):
+        for folder, name in READINGS:
+            seeds = {r["seed"] for r in rows if r["folder_name"] == folder and r["test"] == test}
+            cells = []
+            for column, _, digits in READING_MEASURES:
+                values = reading_values(rows, folder, test, column)
+                cells.append(cell(values.values(), digits) + (" [%d]" % len(values) if len(values) < len(seeds) else ""))
+            lines.append("| %s | %s-2 | %d | %s |" % (name, test, len(seeds), " | ".join(cells)))
+    return "\n".join(lines)
+
+
+def readings_changes(doc):
+    rows = read_rows(os.path.join(doc, "readings_runs.csv"))
+    found = []
+    for test in ("O", "I"):
+        for folder, name in READINGS[1:]:
+            for column, label, digits in READING_MEASURES:
+                ref, other = reading_values(rows, "clipped", test, column), reading_values(rows, folder, test, column)
+                if len(ref) > 1 and len(other) > 1:
+                    found.append((name, test, label, digits, compare(ref, other)))
+    adjusted = holm([c["p"] for *_, c in found])
+    lines = ["| reading | test | measure | change from clipped | 95%% interval | p | resolved | Holm (%d) | design |"
+             % len(found), "|---|---|---|---|---|---|---|---|---|"]
+    for (name, test, label, digits, c), p_holm in zip(found, adjusted):
+        d = digits + 1
+        span = "%+.*f .. %+.*f" % (d, c["low"], d, c["high"]) if c["low"] == c["low"] else ""
+        survives = ("yes" if p_holm < 0.05 else "no") if p_holm == p_holm else ""
+        lines.append("| %s | %s-2 | %s | %+.*f +- %.*f | %s | %s | %s | %s | %s |"
+                     % (name, test, label, d, c["change"], d, c["se"], span, "%.2g" % c["p"] if c["p"] == c["p"] else "",
+                        c["resolved"], survives, c["design"]))
+    return "\n".join(lines)
+
+
 def history_events(path):
     """From a run's history: the events at its first row (the first load) and where the mean stress
     p' first reaches 10 and 50 MPa ('' where it never does)."""
@@ -152,7 +218,8 @@ def add_run(runtimes, spec, doc):
         writer.writerows(rows + [new])
 
 
-TABLES = {"table3": ("results.md", table3), "table3_io": ("results.md", table3_io)}
+TABLES = {"table3": ("results.md", table3), "table3_io": ("results.md", table3_io),
+          "readings": ("results.md", readings), "readings_changes": ("results.md", readings_changes)}
 
 
 def markers(name):
