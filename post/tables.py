@@ -27,6 +27,11 @@ Tables:
            means over the seeds with their 95% t intervals.
   readings_changes  doc/results.md, from the same CSV: each reading against the decks' (clipped),
            measure by measure, by post/seeds.py's rule, and Holm's correction over the table.
+  accuracy_errors  doc/accuracy_vs_cost.md, from doc/accuracy_seeds_runs.csv (bench/accuracy_seeds.sh):
+           each setting's errors against the reference's mean curves, with its cost against N2 in the
+           same round.
+  accuracy_changes  doc/accuracy_vs_cost.md, from the same CSV: each setting's measures against the
+           base N2 by the one rule, and Holm's correction over the table.
   table3_io  doc/results.md, from the same CSV: isotropic minus oedometric events per initial grain,
            paired by seed at each N, at the tests' ends (the paper's comparison), at the first load
            and at equal mean stress p' (10 and 50 MPa: the oedometer reaches p' of about 56 MPa).
@@ -40,7 +45,7 @@ import sys
 
 if not __package__:  # run as a file (python3 post/tables.py): the folder above post/ holds the package
     sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-from post.seeds import compare, holm, interval, statistics  # noqa: E402
+from post.seeds import compare, holm, interval, statistics, welch  # noqa: E402
 
 DOC = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "doc")
 
@@ -188,6 +193,82 @@ def readings_changes(doc):
     return "\n".join(lines)
 
 
+# The accuracy-versus-cost study with seeds (bench/accuracy_seeds.sh): its errors (scale), measures.
+ACCURACY_ERRORS = [("err_porosity", "dn", 1, 4), ("err_K0", "dK0", 1, 3), ("err_gsd_percent", "dGSD (%)", 1, 2),
+                   ("err_I_G", "dI_G", 1, 4), ("err_events_relative", "d events (%)", 100, 1),
+                   ("err_yield_relative", "d yield (%)", 100, 1)]
+ACCURACY_MEASURES = [("n_1MPa", "n at 1 MPa", 4), ("n_10MPa", "n at 10 MPa", 4), ("n_100MPa", "n at 100 MPa", 4),
+                     ("K0_mean", "K0", 3), ("I_G_100MPa", "I_G at 100 MPa", 4),
+                     ("events_per_grain", "events per grain", 4), ("yield_MPa", "yield (MPa)", 2)]
+ACCURACY_BASE, ACCURACY_REFERENCE = "N2", "N1"
+
+
+def by_setting(rows):
+    """{setting: {seed: row}} in the order the settings first appear."""
+    out = {}
+    for r in rows:
+        out.setdefault(r["setting"], {}).setdefault(r["seed"], r)
+    return out
+
+
+def seed_values(seeds, column, scale=1.0):
+    return dict((k, scale * float(r[column])) for k, r in seeds.items() if r.get(column, "") not in ("", "nan"))
+
+
+def accuracy_errors(doc):
+    settings = by_setting(read_rows(os.path.join(doc, "accuracy_seeds_runs.csv")))
+    reference, base = settings[ACCURACY_REFERENCE], settings[ACCURACY_BASE]
+    lines = ["| setting | seeds | cost vs N2 (median, range) | cost vs N2 (mean, 95% interval) | "
+             + " | ".join(label for _, label, _, _ in ACCURACY_ERRORS) + " |", "|" + "---|" * (4 + len(ACCURACY_ERRORS))]
+    for name, seeds in settings.items():
+        ratios = [float(r["seconds"]) / float(base[k]["seconds"]) for k, r in seeds.items() if k in base]
+        cost = ("%.2f (%.2f .. %.2f)" % (py_statistics.median(ratios), min(ratios), max(ratios))) if ratios else ""
+        n, mean, _, se = statistics(ratios)
+        low, high, _ = interval(mean, se, n - 1) if n > 1 else (float("nan"),) * 3
+        mark = "*" if low == low and (low > 1 or high < 1) else ""
+        cost_mean = "%.2f (%.2f .. %.2f)%s" % (mean, low, high, mark) if low == low else ""
+        cells = []
+        for column, _, scale, digits in ACCURACY_ERRORS:
+            values = seed_values(seeds, column, scale)
+            # beyond the reference's own spread (each of its seeds against the others' mean): unpaired,
+            # for a setting's error and the reference's self-error do not share a sample
+            beyond = ""
+            if name != ACCURACY_REFERENCE:
+                low, _, _ = interval(*welch(seed_values(reference, column, scale).values(), values.values()))
+                beyond = "*" if low == low and low > 0 else ""
+            cells.append(cell(values.values(), digits) + beyond)
+        lines.append("| %s | %d | %s | %s | %s |" % (name, len(seeds), cost, cost_mean, " | ".join(cells)))
+    return "\n".join(lines)
+
+
+def accuracy_changes(doc):
+    settings = by_setting(read_rows(os.path.join(doc, "accuracy_seeds_runs.csv")))
+    base = settings[ACCURACY_BASE]
+    found = []
+    for name, seeds in settings.items():
+        if name == ACCURACY_BASE:
+            continue
+        for column, _, digits in ACCURACY_MEASURES:
+            found.append((name, column, digits, compare(seed_values(base, column), seed_values(seeds, column))))
+    adjusted = dict(zip(((f[0], f[1]) for f in found), holm([f[3]["p"] for f in found])))
+    lines = ["| setting | " + " | ".join(label for _, label, _ in ACCURACY_MEASURES) + " |",
+             "|" + "---|" * (1 + len(ACCURACY_MEASURES))]
+    for name in [n for n in settings if n != ACCURACY_BASE]:
+        cells = []
+        for setting, column, digits, c in found:
+            if setting != name:
+                continue
+            if c["low"] != c["low"]:
+                cells.append("%+.*f" % (digits, c["change"]))
+                continue
+            mark = "" if c["resolved"] != "yes" else ("**" if adjusted[(name, column)] < 0.05 else "*")
+            cells.append("%+.*f (%+.*f .. %+.*f)%s%s" % (digits, c["change"], digits, c["low"], digits, c["high"], mark,
+                                                        "" if c["design"].startswith("paired") else " u"))
+        lines.append("| %s | %s |" % (name, " | ".join(cells)))
+    return "\n".join(lines) + "\n\n(%d changes; '*' resolved, '**' also after Holm's correction over them; 'u': unpaired, " \
+        "Welch)" % len(found)
+
+
 def history_events(path):
     """From a run's history: the events at its first row (the first load) and where the mean stress
     p' first reaches 10 and 50 MPa ('' where it never does)."""
@@ -219,7 +300,9 @@ def add_run(runtimes, spec, doc):
 
 
 TABLES = {"table3": ("results.md", table3), "table3_io": ("results.md", table3_io),
-          "readings": ("results.md", readings), "readings_changes": ("results.md", readings_changes)}
+          "readings": ("results.md", readings), "readings_changes": ("results.md", readings_changes),
+          "accuracy_errors": ("accuracy_vs_cost.md", accuracy_errors),
+          "accuracy_changes": ("accuracy_vs_cost.md", accuracy_changes)}
 
 
 def markers(name):
