@@ -32,6 +32,8 @@ Tables:
            same round.
   accuracy_changes  doc/accuracy_vs_cost.md, from the same CSV: each setting's measures against the
            base N2 by the one rule, and Holm's correction over the table.
+  upscaling  doc/results.md, from doc/upscaling_runs.csv (scripts/upscaling_seeds.sh): O-N and I-N at
+           N = 1.5 and 2 against N = 1, measure by measure, by the one rule, and Holm over the table.
   table3_io  doc/results.md, from the same CSV: isotropic minus oedometric events per initial grain,
            paired by seed at each N, at the tests' ends (the paper's comparison), at the first load
            and at equal mean stress p' (10 and 50 MPa: the oedometer reaches p' of about 56 MPa).
@@ -269,6 +271,44 @@ def accuracy_changes(doc):
         "Welch)" % len(found)
 
 
+UPSCALING_MEASURES = [("n_1MPa", "n at 1 MPa", 4), ("n_10MPa", "n at 10 MPa", 4), ("n_100MPa", "n at 100 MPa", 4),
+                      ("K0_mean", "K0 (mean over 1 - 100 MPa)", 3), ("I_G_first_load", "I_G after the first load", 3),
+                      ("I_G_10MPa", "I_G at 10 MPa", 3), ("I_G_100MPa", "I_G at 100 MPa", 3),
+                      ("events_per_grain", "events per initial grain", 3), ("yield_MPa", "yield stress (MPa)", 1)]
+
+
+def upscaling(doc):
+    rows = read_rows(os.path.join(doc, "upscaling_runs.csv"))
+    runs = dict(((r["test"], r["N"]), {}) for r in rows)
+    for r in rows:
+        runs[(r["test"], r["N"])].setdefault(r["seed"], r)
+    found = []
+    for test in ("O", "I"):
+        for n in ("1.5", "2"):
+            for column, _, digits in UPSCALING_MEASURES:
+                one, other = seed_values(runs.get((test, "1"), {}), column), seed_values(runs.get((test, n), {}), column)
+                if len(one) > 1 and len(other) > 1:
+                    found.append(((test, n, column), compare(one, other)))
+    adjusted = dict(zip((k for k, _ in found), holm([c["p"] for _, c in found])))
+    changes = dict(found)
+    lines = ["| measure | O-1 | O-1.5 - O-1 | O-2 - O-1 | I-1 | I-1.5 - I-1 | I-2 - I-1 |", "|---|---|---|---|---|---|---|"]
+    for column, label, digits in UPSCALING_MEASURES:
+        cells = []
+        for test in ("O", "I"):
+            cells.append(cell(seed_values(runs.get((test, "1"), {}), column).values(), digits))
+            for n in ("1.5", "2"):
+                c = changes.get((test, n, column))
+                if c is None:
+                    cells.append("")
+                    continue
+                mark = "" if c["resolved"] != "yes" else ("**" if adjusted[(test, n, column)] < 0.05 else "*")
+                cells.append("%+.*f (%+.*f .. %+.*f)%s%s" % (digits, c["change"], digits, c["low"], digits, c["high"], mark,
+                                                            "" if c["design"].startswith("paired") else " u"))
+        lines.append("| %s | %s |" % (label, " | ".join(cells)))
+    return "\n".join(lines) + "\n\n(%d changes; '*' resolved, '**' also after Holm's correction over them; 'u': unpaired, " \
+        "Welch; the others paired on the seeds both ran)" % len(found)
+
+
 def history_events(path):
     """From a run's history: the events at its first row (the first load) and where the mean stress
     p' first reaches 10 and 50 MPa ('' where it never does)."""
@@ -301,6 +341,7 @@ def add_run(runtimes, spec, doc):
 
 TABLES = {"table3": ("results.md", table3), "table3_io": ("results.md", table3_io),
           "readings": ("results.md", readings), "readings_changes": ("results.md", readings_changes),
+          "upscaling": ("results.md", upscaling),
           "accuracy_errors": ("accuracy_vs_cost.md", accuracy_errors),
           "accuracy_changes": ("accuracy_vs_cost.md", accuracy_changes)}
 
