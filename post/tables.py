@@ -47,14 +47,14 @@ import sys
 
 if not __package__:  # run as a file (python3 post/tables.py): the folder above post/ holds the package
     sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+from post.paper import TABLE3  # noqa: E402
 from post.seeds import compare, holm, interval, statistics, welch  # noqa: E402
 
 DOC = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "doc")
 
-# Table 3 of Ciantia et al. (2014): N_i, N_e, crushing events, model run (min); the paper's E-N are
-# the oedometric tests, O-N here.
-PAPER = {("O", "2"): (1304, 4372, 236, 31), ("O", "1.5"): (3084, 9974, 530, 67), ("O", "1"): (10397, 37658, 2097, 183),
-         ("I", "2"): (1304, 5230, 302, 29), ("I", "1.5"): (3084, 10819, 595, 67), ("I", "1"): (10397, 40778, 2337, 203)}
+# Table 3 of Ciantia et al. (2014) (post/paper.py): N_i, N_e, crushing events, model run (min) by
+# (test, N); the paper's E-N are the oedometric tests, O-N here.
+PAPER = dict(((name[0], name[1:]), row) for name, row in TABLE3.items())
 ORDER = [("O", "2"), ("O", "1.5"), ("O", "1"), ("I", "2"), ("I", "1.5"), ("I", "1")]
 
 
