@@ -71,18 +71,29 @@ def runs_by_test(rows):
     return out
 
 
-def mean_interval(values, digits=0):
-    """'mean (low - high)' with the 95% t interval of the mean, or the value alone for one run."""
-    n, mean, _, se = statistics(values)
+def cell(values, digits=0):
+    """'mean (low .. high)' over the seeds with the 95% t interval of the mean; the value alone for one
+    run, nothing for none."""
+    n, mean, _, se = statistics(list(values))
     if n < 2:
-        return "%.*f" % (digits, mean)
+        return "%.*f" % (digits, mean) if n else ""
     low, high, _ = interval(mean, se, n - 1)
     return "%.*f (%.*f .. %.*f)" % (digits, mean, digits, low, digits, high)
 
 
+def change_cell(c, digits, p_holm):
+    """A change of compare() as 'change (low .. high)': '*' resolved, '**' also after Holm (p_holm),
+    ' u' where unpaired (Welch)."""
+    if c["low"] != c["low"]:
+        return "%+.*f" % (digits, c["change"])
+    mark = "" if c["resolved"] != "yes" else ("**" if p_holm < 0.05 else "*")
+    return "%+.*f (%+.*f .. %+.*f)%s%s" % (digits, c["change"], digits, c["low"], digits, c["high"], mark,
+                                           "" if c["design"].startswith("paired") else " u")
+
+
 def against_paper(values, paper):
     """The runs' mean over the paper's value, in percent, with its 95% t interval."""
-    return mean_interval([100.0 * (v / paper - 1.0) for v in values])
+    return cell([100.0 * (v / paper - 1.0) for v in values])
 
 
 def table3(doc):
@@ -105,7 +116,7 @@ def table3(doc):
         seconds = py_statistics.median(float(r["seconds"]) for r in rows)
         ranks = "/".join(sorted({r["ranks"] for r in rows}))
         lines.append("| %s | %d | %s | %s | %s | %s | %d, %d, %d | %s | %s | %.0f; %s | %d |" % (
-            name, len(rows), mean_interval(ni), mean_interval(ne), mean_interval(events), mean_interval(share, 1),
+            name, len(rows), cell(ni), cell(ne), cell(events), cell(share, 1),
             p_ni, p_ne, p_events, against_paper(ne, p_ne), against_paper(events, p_events), seconds, ranks, p_minutes))
     return "\n".join(lines)
 
@@ -147,15 +158,6 @@ def reading_values(rows, folder, test, column):
     """{seed: value} of one reading, test and measure (empty cells left out)."""
     return dict((r["seed"], float(r[column])) for r in rows
                 if r["folder_name"] == folder and r["test"] == test and r.get(column, "") not in ("", "nan"))
-
-
-def cell(values, digits):
-    """'mean (low .. high)' over the seeds, with '[n]' where fewer than the reading's runs have a value."""
-    n, mean, _, se = statistics(list(values))
-    if n < 2:
-        return "%.*f" % (digits, mean) if n else ""
-    low, high, _ = interval(mean, se, n - 1)
-    return "%.*f (%.*f .. %.*f)" % (digits, mean, digits, low, digits, high)
 
 
 def readings(doc):
@@ -260,12 +262,7 @@ def accuracy_changes(doc):
         for setting, column, digits, c in found:
             if setting != name:
                 continue
-            if c["low"] != c["low"]:
-                cells.append("%+.*f" % (digits, c["change"]))
-                continue
-            mark = "" if c["resolved"] != "yes" else ("**" if adjusted[(name, column)] < 0.05 else "*")
-            cells.append("%+.*f (%+.*f .. %+.*f)%s%s" % (digits, c["change"], digits, c["low"], digits, c["high"], mark,
-                                                        "" if c["design"].startswith("paired") else " u"))
+            cells.append(change_cell(c, digits, adjusted[(name, column)]))
         lines.append("| %s | %s |" % (name, " | ".join(cells)))
     return "\n".join(lines) + "\n\n(%d changes; '*' resolved, '**' also after Holm's correction over them; 'u': unpaired, " \
         "Welch)" % len(found)
@@ -301,9 +298,7 @@ def upscaling(doc):
                 if c is None:
                     cells.append("")
                     continue
-                mark = "" if c["resolved"] != "yes" else ("**" if adjusted[(test, n, column)] < 0.05 else "*")
-                cells.append("%+.*f (%+.*f .. %+.*f)%s%s" % (digits, c["change"], digits, c["low"], digits, c["high"], mark,
-                                                            "" if c["design"].startswith("paired") else " u"))
+                cells.append(change_cell(c, digits, adjusted[(test, n, column)]))
         lines.append("| %s | %s |" % (label, " | ".join(cells)))
     return "\n".join(lines) + "\n\n(%d changes; '*' resolved, '**' also after Holm's correction over them; 'u': unpaired, " \
         "Welch; the others paired on the seeds both ran)" % len(found)
