@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# What accuracy costs, resolved by seeds (doc/accuracy_vs_cost.md, "Resolved by seeds"): the knobs
+# What accuracy costs, resolved by seeds (studies/accuracy/README.md, "Resolved by seeds"): the knobs
 # of bench/accuracy_vs_cost.sh at N = 2 with five seeds (each its own sample and strength draw): the
 # base N2 (L_R 0.1, dmin 0.05 mm, dt fraction 0.5, every step, fourteen fragments of true density),
 # L_R 0.05 and 0.2, dmin 0.025 mm, dt fraction 0.8, the step every 10 steps, breakage checked every

@@ -1,19 +1,19 @@
 #!/usr/bin/env bash
 # What accuracy costs in time: the oedometric test O-N with the paper's crushing (the decks' default,
-# the Table 3 reading of doc/results.md), run at settings that trade accuracy for time, each on RANKS
+# the Table 3 reading of studies/fontainebleau/README.md), run at settings that trade accuracy for time, each on RANKS
 # MPI ranks (default 2), compared with the finest setting that stays quasi-static (N = 1, L_R = 0.05,
 # dmin = 0.025 mm: without a comminution limit fragments of fragments reach nanometres and the time
-# step 1e-12 s, see doc/accuracy_vs_cost.md). One command:
+# step 1e-12 s, see studies/accuracy/README.md). One command:
 #   bash bench/accuracy_vs_cost.sh [OUT_DIR (default runs/accuracy)] [setting ...]
 # A setting already run (OUT_DIR/<name>/done) is not run again; delete the folder to redo it.
 # A run stopped after LIMIT seconds (default 1800, 0 = none) is reported with the stress it reached.
 # 'bash bench/accuracy_vs_cost.sh runs/accuracy nodmin_N1' adds the reference without a comminution
-# limit (doc/accuracy_vs_cost.md: why it is not the reference).
+# limit (studies/accuracy/README.md: why it is not the reference).
 # SEEDS="S1 S2 ..." runs every setting once per seed (its sample and strength draw) into
 # OUT_DIR/<name>_s<seed>; without it, once with the decks' seed into OUT_DIR/<name>.
 # bench/accuracy_seeds.sh runs the study with seeds (5 at N = 2, 3 for the reference).
 # Then bench/accuracy_vs_cost.py writes OUT_DIR/accuracy_vs_cost.csv and the figures
-# (doc/accuracy_vs_cost.md explains them). Takes about an hour on a 2-core machine (one seed).
+# (studies/accuracy/README.md explains them). Takes about an hour on a 2-core machine (one seed).
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 out=$(mkdir -p "${1:-$here/runs/accuracy}" && cd "${1:-$here/runs/accuracy}" && pwd)

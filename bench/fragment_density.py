@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The fragments' time-step knob (fix crush 'fragment_density scaled') against the true density, on
 the oedometric test O-2 and the penetration test dense_region, each over three seeds
-(bench/fragment_density.sh runs them; doc/accuracy_vs_cost.md reads the table).
+(bench/fragment_density.sh runs them; studies/accuracy/README.md reads the table).
 
   python3 bench/fragment_density.py O2_TRUE_DIR O2_SCALED_DIR PENETRATION_STUDY_CSV
 

@@ -2,7 +2,7 @@
 # The fragments' time-step knob (fix crush 'fragment_density scaled', doc/fix_crush.txt) as an
 # accuracy-versus-cost row: O-2 to 100 MPa and the penetration test dense_region, each over three
 # seeds with the true density and with the scaled one, then bench/fragment_density.py's tables
-# (doc/accuracy_vs_cost.md, "The fragments' time step"). About 25 minutes on 2 cores.
+# (studies/accuracy/README.md, "The fragments' time step"). About 25 minutes on 2 cores.
 #   bash bench/fragment_density.sh [OUT_DIR (default runs/fragment_density)]
 # Environment: LIGGGHTS (build/liggghts), RANKS (2).
 set -euo pipefail

@@ -6,7 +6,7 @@
 # run takes about as long.
 #   bash bench/large_run.sh [cells ...]     (default 14 29 63: 10,976, 97,556 and 1,000,188 spheres)
 # A projection to 100 MPa multiplies the time per particle-step by the particles and the ramp's steps
-# (doc/accuracy_vs_cost.md).
+# (studies/accuracy/README.md).
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 source "$here/dense_assembly.sh"   # liggghts, the scratch folder work with the decks

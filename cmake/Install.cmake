@@ -24,8 +24,9 @@ install(DIRECTORY "${PROJECT_SOURCE_DIR}/examples/" DESTINATION "${_share}/examp
 # post/ as a package under share/, and its commands (crush-summary, ...) beside the binary.
 include(${CMAKE_CURRENT_LIST_DIR}/PostTools.cmake)
 install(FILES "${PROJECT_SOURCE_DIR}/README.md" DESTINATION "${_doc}" COMPONENT runtime)
-install(DIRECTORY "${PROJECT_SOURCE_DIR}/doc/" DESTINATION "${_doc}" COMPONENT runtime
-        PATTERN "*.csv" EXCLUDE)
+# doc/ and studies/ side by side, as in the repository, so that the pages' relative links hold
+install(DIRECTORY "${PROJECT_SOURCE_DIR}/doc/" DESTINATION "${_doc}/doc" COMPONENT runtime)
+install(DIRECTORY "${PROJECT_SOURCE_DIR}/studies/" DESTINATION "${_doc}/studies" COMPONENT runtime)
 install(CODE "file(CREATE_LINK liggghts-crush \"\$ENV{DESTDIR}\${CMAKE_INSTALL_PREFIX}/${CMAKE_INSTALL_BINDIR}/liggghts\" SYMBOLIC)
               message(STATUS \"Installing: \$ENV{DESTDIR}\${CMAKE_INSTALL_PREFIX}/${CMAKE_INSTALL_BINDIR}/liggghts -> liggghts-crush\")"
         COMPONENT alias)

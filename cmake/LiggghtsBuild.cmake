@@ -72,7 +72,7 @@ set_target_properties(liggghts PROPERTIES RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINA
 # The hot path's own flags (cmake/hot_path_units.txt): bench/build_flags.sh measured, against Debian's
 # liggghts on the dense benchmark, 1.135 with the build's -O3 -funroll-loops, 1.136 with Debian's own
 # -O2, 1.138 with LIGGGHTS' Makefile default -O2 -funroll-loops and 1.061 with -O3 without unrolling
-# (doc/accuracy_vs_cost.md). Appended after the target's flags, so they win where they differ.
+# (studies/accuracy/README.md). Appended after the target's flags, so they win where they differ.
 set(LIGGGHTS_CRUSH_HOT_FLAGS "-fno-unroll-loops" CACHE STRING
     "Extra compiler flags for the translation units on a DEM step's hot path (cmake/hot_path_units.txt)")
 option(LIGGGHTS_CRUSH_NATIVE "Compile the hot path for this machine's processor (-march=native; the binary may not run elsewhere)" OFF)

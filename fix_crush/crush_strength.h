@@ -14,7 +14,7 @@
      like normal. One original grain in six (CV = 1) has zero strength and breaks at its first load;
      fragments never do, so there is no cascade. The reading of the paper's Table 3, where the
      events per initial grain (17-23%) are Phi(-1) = 15.9% plus the few percent that the
-     truncated draw breaks by 100 MPa (doc/results.md).
+     truncated draw breaks by 100 MPa (studies/fontainebleau/README.md).
    - weibull: P(s) = 1 - exp(-(s/s0)^m) with m = weibull_m and s0 chosen so that the mean is sigma_lim0
      (the CV then follows from m: 0.120 for m = 10).
    - constant: s = sigma_lim0 for every particle.

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """Critical states of drained triaxial tests with crushing (examples/fontainebleau/in.triaxial,
-scripts/critical_state_study.sh), the critical state line and plane, for doc/critical_state.md.
+scripts/critical_state_study.sh), the critical state line and plane, for studies/critical_state/README.md.
 
     post/critical_state.py [--out DIR] [--window W] [--max-dilatancy D] FOLDER ...
 
@@ -30,7 +30,7 @@ and, paired by seed (the seed fixes the sample and the strengths; post/seeds.py'
 --max-dilatancy D leaves the tests whose |dilatancy| at the end exceeds D (still changing volume: not
 at a critical state) out of every fit and pairing; the tables list them and fit.md names them.
 A folder without _s<seed> holds the decks' seed (15485863).
-Writes DIR/critical_states.csv (a row a test), DIR/fit.md (the tables of doc/critical_state.md) and
+Writes DIR/critical_states.csv (a row a test), DIR/fit.md (the tables of studies/critical_state/README.md) and
 the figures DIR/figures/critical_state_e_lnp.png (e against ln p', every test's path and critical
 state, the lines), critical_state_IG_p.png (I_G against p' through compression and shearing, the
 critical states), critical_state_plane.png (each plane seen edge-on: e_cs + lambda ln p' against I_G)

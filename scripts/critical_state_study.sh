@@ -1,19 +1,19 @@
 #!/usr/bin/env bash
-# The critical-state study of doc/critical_state.md: drained triaxial tests with crushing
+# The critical-state study of studies/critical_state/README.md: drained triaxial tests with crushing
 # (examples/fontainebleau/in.triaxial -var crushing 1), each an isotropic compression to p'_0 followed
 # by shearing to 30% axial strain, over pressures, densities and grain rotation; then
 # post/critical_state.py's critical states, fitted line and plane, tables and figures.
 #   bash scripts/critical_state_study.sh [OUT_DIR (default runs/critical_state)] [cases...]
 # A case is variant:sample:p0[:path[:seed]]: variant rotation0 (grains do not rotate, the decks'
 # default), rolling (free rotation against LIGGGHTS' rolling resistance epsd2, mu_r 0.7,
-# doc/results.md), normal (as rotation0, with the strength draw 'normal' of fix crush: no grain of
-# zero strength, doc/results.md), weak (as normal, sigma_lim0 = 1 GPa: the reading whose O-2 yield
-# stress nears the decks', doc/results.md "The strength reading side by side") or none (as rotation0,
+# studies/fontainebleau/README.md), normal (as rotation0, with the strength draw 'normal' of fix crush: no grain of
+# zero strength, studies/fontainebleau/README.md), weak (as normal, sigma_lim0 = 1 GPa: the reading whose O-2 yield
+# stress nears the decks', studies/fontainebleau/README.md "The strength reading side by side") or none (as rotation0,
 # no grain breaks: the uncrushable control), each
 # with an optional suffix _pre<P> (the sample pre-crushed: compressed isotropically to P MPa, unloaded
 # to p0 and sheared there, in.triaxial's precrush; e.g. normal_pre50), sample dense or loose (in.prepare with friction 0.5), p0 the cell pressure in MPa,
 # path sigma3 (constant cell pressure, default) or p (constant p'), seed (the sample's and the
-# strengths', default the decks' 15485863). Default: the cases of doc/critical_state.md: rotation0 at
+# strengths', default the decks' 15485863). Default: the cases of studies/critical_state/README.md: rotation0 at
 # p0 = 0.1 0.5 2 5 10 20 50 MPa, normal at the same, rolling at 2 10 50 MPa, each dense and loose,
 # path sigma3;
 # constant p' (path p) for rotation0 at 10 MPa. The case "fit" only refits and redraws from the
@@ -81,7 +81,7 @@ run_case() {
   echo "   $spec: $wall s ($cpu s CPU)"
 }
 
-# the named groups of doc/critical_state.md: seeds (normal at 2, 10 and 50 MPa with a second seed),
+# the named groups of studies/critical_state/README.md: seeds (normal at 2, 10 and 50 MPa with a second seed),
 # precrushed (weak and weak_pre50 dense at 2 and 10 MPa, three seeds each; the uncrushable control
 # none dense at 0.5 - 50 MPa and loose at 10 - 50 MPa, three seeds at 10 and 50 MPa)
 seeds=(15485863 179424673 373587883)

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The full Fontainebleau runs of doc/results.md: O-N and I-N to 100 MPa for N = 2, 1.5, 1, and the
+# The full Fontainebleau runs of studies/fontainebleau/README.md: O-N and I-N to 100 MPa for N = 2, 1.5, 1, and the
 # dense and loose triaxial tests at 100 kPa, each on RANKS MPI ranks (default 2), then the figures.
 #   bash scripts/fontainebleau_runs.sh [OUT_DIR (default runs/fontainebleau)] [tests...]
 #   tests: O2 O1.5 O1 I2 I1.5 I1 Tdense Tloose (default: all); TEST:SEED runs it with another seed

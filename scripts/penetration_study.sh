@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
-# The penetration study of doc/penetration.md: cone penetration tests (examples/penetration/in.cone)
+# The penetration study of studies/penetration/README.md: cone penetration tests (examples/penetration/in.cone)
 # in chambers prepared by in.chamber, one per case, each timed, then post/penetration.py's plateau
 # q_c, sleeve friction and gradings gathered in OUT_DIR/study.csv.
 #   bash scripts/penetration_study.sh [OUT_DIR (default runs/penetration)] [cases...]
-#   bash scripts/penetration_study.sh runs/evidence rate seeds more pile knob weak   # doc/penetration.md's evidence
+#   bash scripts/penetration_study.sh runs/evidence rate seeds more pile knob weak   # studies/penetration/README.md's evidence
 # A case is NAME (one of the table below) or a spec density:N:crushing:v:width:ranks[:distribution
 # [:sigma_v[:seed[:fragment_density[:depth]]]]] (the strength distribution of in.grains, default
 # normal_clipped_originals; the vertical stress, Pa, default 1e5; the seed of the chamber's grains and
@@ -14,7 +14,7 @@
 # explicitly). A case already in OUT_DIR/study.csv is skipped. Chambers are prepared (in.chamber: consolidated with crushing, the element tests' protocol)
 # once per (density, N, width, depth, sigma_v, seed, fragment density) in OUT_DIR/chambers and copied.
 # The case "summarise" runs post/penetration.py again in every case's folder that remains and writes
-# its crushing about the tip's path into the case's row. The case "figures" draws doc/penetration.md's figures from the cases already run
+# its crushing about the tip's path into the case's row. The case "figures" draws studies/penetration/README.md's figures from the cases already run
 # (OUT_DIR/figures: q_c, events and gradings of dense_region, dense_off, loose_region, loose_off; the
 # events of dense_region_1MPa and of N80_region, N80_everywhere).
 # Environment: LIGGGHTS (build/liggghts).
@@ -62,7 +62,7 @@ order="dense_region dense_off loose_region loose_off N80_region N80_off N80_ever
 order="$order N80_off_np1 N80_region_np1 dense_region_normal dense_region_1MPa dense_off_1MPa"
 order="$order N80_region_s2 N80_region_s3 N80_off_s2 N80_off_s3"
 order="$order dense_region_s2 dense_region_s3 dense_region_scaled dense_region_scaled_s2 dense_region_scaled_s3"
-# The evidence of doc/penetration.md (the element tests' protocol: chambers consolidated with
+# The evidence of studies/penetration/README.md (the element tests' protocol: chambers consolidated with
 # crushing): N = 80, 10 D_c wide, 4 D_c of penetration (q_c over 2 - 4 D_c), fragment_density
 # scaled. Groups: rate (v = 2, 1, 0.5, 0.25, 0.125 m/s, dense, crushing in the
 # zone, 100 kPa), seeds (at the chosen velocity V: dense and loose at 100 kPa, dense at 1 MPa, each
@@ -74,7 +74,7 @@ order="$order dense_region_s2 dense_region_s3 dense_region_scaled dense_region_s
 # grains ten times weaker: sigma_lim0 = 0.5 GPa, chamber and test; the cone, and the pile with
 # crushing everywhere too). The rate study has six seeds, crushing everywhere or none at 1 MPa six
 # too (group more: seeds 4 - 6), the other groups three. V (PENETRATION_V) is 0.5 m/s, the velocity
-# the groups ran at; the six-seed rate study then chose 0.25 m/s for in.cone (doc/penetration.md).
+# the groups ran at; the six-seed rate study then chose 0.25 m/s for in.cone (studies/penetration/README.md).
 V=${PENETRATION_V:-0.5}
 seeds=(15485863 179424673 373587883 573259391 776531419 982451653)
 declare -A group=()
@@ -272,7 +272,7 @@ for c in ${*:-$order}; do cases+=" ${group[$c]:-$c}"; done
 # The last four columns, with the spec's, tell every case apart (post/penetration_stats.py groups by
 # all of them): tip_shape, sigma_lim0, neighbor_style (a name=value of the case, or the decks'
 # default) and extra (the case's other name=value settings, sorted, joined by ';'). The rows of
-# doc/penetration_study.csv, run before these columns, had them added from the case names and the
+# studies/penetration/penetration_study.csv, run before these columns, had them added from the case names and the
 # groups above: pile_* flat with stress_every=0.5, weak_* sigma_lim0 5e8, knob_bin_* bin, the rest
 # in.cone's defaults (cone, 5e9, multi: the runs postdate multi as in.cone's default).
 header0="case,density,N,D_c_over_d50,crushing,v,width,ranks,distribution,sigma_v,seed,grains,particles,events,events_loaded,steps,seconds,q_c_MPa,q_c_sd_MPa,f_s_kPa,I_G_near,I_G_far,fragment_density,depth,I_G_near0,chamber_events,v_measured,I_tip,I_chamber,ke_share,tip_shape,sigma_lim0,neighbor_style,extra"
@@ -282,7 +282,7 @@ path_columns="events_path1,events_path2,events_far,I_G_path,I_G_path0,I_G_far0"
 header="$header0,$path_columns"
 [ -f "$out/study.csv" ] || echo "$header" > "$out/study.csv"
 [ "$(head -n 1 "$out/study.csv")" != "$header0" ] || sed -i "1s/.*/$header/" "$out/study.csv"
-[ "$(head -n 1 "$out/study.csv")" = "$header" ] || { echo "$out/study.csv: not this script's columns (an older study's, without those that tell the cases apart?): another OUT_DIR, or add them as doc/penetration_study.csv's were" >&2; exit 2; }
+[ "$(head -n 1 "$out/study.csv")" = "$header" ] || { echo "$out/study.csv: not this script's columns (an older study's, without those that tell the cases apart?): another OUT_DIR, or add them as studies/penetration/penetration_study.csv's were" >&2; exit 2; }
 # a deck's default for a variable: its 'variable NAME index VALUE' line
 default() { awk -v n="$2" '$1 == "variable" && $2 == n && $3 == "index" {print $4; exit}' "$1"; }
 # the case's defining settings of its name=value fields: tip_shape, sigma_lim0, neighbor_style, extra

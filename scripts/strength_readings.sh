@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The strength reading side by side (doc/results.md, "The strength reading side by side"): O-2 and I-2
+# The strength reading side by side (studies/fontainebleau/README.md, "The strength reading side by side"): O-2 and I-2
 # to 100 MPa under four readings of the grains' strengths, each with the seeds of SEEDS, one round a
 # seed (every reading once in turn), each reading's runs in a folder of its own:
 #   clipped    the decks' normal_clipped_originals (the Table 3 reading: an original grain's negative

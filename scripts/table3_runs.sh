@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
-# Table 3 from seeds (doc/results.md): the oedometric and isotropic tests O-N and I-N to 100 MPa at
+# Table 3 from seeds (studies/fontainebleau/README.md): the oedometric and isotropic tests O-N and I-N to 100 MPa at
 # N = 2, 1.5, 1, each with five seeds (the decks' own and four primes), on RANKS ranks (default 2)
 # through scripts/fontainebleau_runs.sh (a finished run is kept), each run's row added to
-# doc/table3_runs.csv as it lands, then the tables rewritten from the CSV (post/tables.py).
+# studies/fontainebleau/table3_runs.csv as it lands, then the tables rewritten from the CSV (post/tables.py).
 #   bash scripts/table3_runs.sh [OUT_DIR (default runs/table3)] [TESTS (default O2 I2 O1.5 I1.5 O1 I1)]
 # SEEDS overrides the five seeds. A run of N = 2 takes about a minute on 2 ranks, N = 1.5 about 2 - 5,
 # N = 1 about 20: split the study by TESTS to fit a sitting.

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Friction angles of drained triaxial runs (examples/fontainebleau/in.triaxial), for doc/results.md.
+"""Friction angles of drained triaxial runs (examples/fontainebleau/in.triaxial), for studies/fontainebleau/README.md.
 
     scripts/triaxial_angles.py FOLDER ...          (each holding one history_T<sample><N>.csv)
 

@@ -48,7 +48,7 @@ def overbooked_at(s, e):
 
 
 def yield_and_slope(s, e, low, high):
-    """Bilinear fit of e against log10 sigma_v (doc/accuracy_vs_cost.md): lines fitted to the ranges
+    """Bilinear fit of e against log10 sigma_v (studies/accuracy/README.md): lines fitted to the ranges
     low and high (Pa); returns the yield stress (their intersection) and the slope of the second
     (the normal compression line, de/dlog10 sigma)."""
     lo = (s >= low[0]) & (s <= low[1])

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Shearing with crushing (examples/fontainebleau/in.triaxial, doc/critical_state.md) and the
+"""Shearing with crushing (examples/fontainebleau/in.triaxial, studies/critical_state/README.md) and the
 critical-state fit (post/critical_state.py).
 
     test_critical_state.py LIGGGHTS WORKDIR CASE [ARGS]

@@ -3,7 +3,7 @@
 
   python3 test_fontainebleau.py LIGGGHTS WORKDIR CASE [RANKS]
 
-The full 100 MPa runs are scripts/fontainebleau_runs.sh (doc/results.md)."""
+The full 100 MPa runs are scripts/fontainebleau_runs.sh (studies/fontainebleau/README.md)."""
 import json
 import math
 import os
@@ -79,7 +79,7 @@ def case_oedometer_short(liggghts, work, ranks=1):
     """O-2 up to 3 MPa with the truncated strength draw (a few events): the prepared sample, the top
     wall following the ramp, K0, the books, the GSD and dump at 1 MPa, and the progress lines. (With
     the decks' default, a sixth of the grains break in the first load steps and the sample collapses
-    faster than the servo follows at these stresses: doc/results.md.)"""
+    faster than the servo follows at these stresses: studies/fontainebleau/README.md.)"""
     out = run_deck(liggghts, os.path.join(DECKS, "in.oedometer"), work, {"sigma_max": 3e6, "distribution": "normal"},
                    ranks=int(ranks))
     check_sample(out)
@@ -95,7 +95,7 @@ def case_oedometer_short(liggghts, work, ranks=1):
     check_books(rows, N2_PARTICLES)
     check(rows[-1]["events"] > 0, "grains crushed (%d events)" % rows[-1]["events"])
     # Grains that do not rotate (the decks' default): K0 near Jaky's 1 - sin(phi) for the triaxial
-    # angles of these grains, 35 - 43 degrees (doc/results.md).
+    # angles of these grains, 35 - 43 degrees (studies/fontainebleau/README.md).
     check(all(0.25 < r["K0"] < 0.45 for r in rows if r["sigma_target"] > 5e5), "0.25 < K0 < 0.45 above 0.5 MPa")
     snapshots = read_dump(os.path.join(work, "dump_O2_1MPa.liggghts"))
     check(len(snapshots[0][2]) >= N2_PARTICLES and "radius" in snapshots[0][1], "dump at 1 MPa with radii")
@@ -127,7 +127,7 @@ def case_overbooked_warning(liggghts, work):
 def case_isotropic_short(liggghts, work):
     """I-2 up to 3 MPa with the truncated strength draw (a few events): all three hi walls follow the
     ramp, q stays small beside p. (With the decks' default the first-load breakage compacts the sample
-    fast between 1 and 3 MPa and the lo walls lag: |q|/p reaches 5%, doc/results.md.)"""
+    fast between 1 and 3 MPa and the lo walls lag: |q|/p reaches 5%, studies/fontainebleau/README.md.)"""
     out = run_deck(liggghts, os.path.join(DECKS, "in.isotropic"), work, {"sigma_max": 3e6, "distribution": "normal"})
     check_sample(out)
     rows = read_history(os.path.join(work, "history_I2.csv"))
@@ -141,7 +141,7 @@ def case_tracking_no_crushing(liggghts, work):
     """O-2 to 5 MPa without crushing, freely rotating grains: the servo alone. The stress measured on
     both walls follows the ramp within 2% and rises in every history row (no oscillation). (With the
     decks' default of grains that do not rotate, the bottom wall lags the ramp by 2.2% at the first
-    row above 1 MPa: doc/results.md.)"""
+    row above 1 MPa: studies/fontainebleau/README.md.)"""
     run_deck(liggghts, os.path.join(DECKS, "in.oedometer"), work, {"sigma_max": 5e6, "crushing": 0, "rotation": 1})
     rows = read_history(os.path.join(work, "history_O2.csv"))
     check(all(r["events"] == 0 for r in rows), "nothing breaks")

@@ -57,9 +57,10 @@ def case_prefix(build, work):
     env = clean_env([os.path.join(prefix, "bin")])
     styles = run(["liggghts", "-h"], work, env, allowed_status=(0, 1))  # LIGGGHTS' -h exits with 1
     check(all(s in styles for s in STYLES), "the 'liggghts' on PATH lists the plugin's styles")
-    for page in ("fix_crush.txt", "design.md", "results.md", "critical_state.md"):
+    for page in ("doc/fix_crush.txt", "doc/design.md", "studies/fontainebleau/README.md",
+                 "studies/critical_state/critical_states.csv", "studies/penetration/figures/penetration_qc_N60.png"):
         check(os.path.exists(os.path.join(prefix, "share", "doc", "liggghts-crush", page)),
-              "doc page %s installed" % page)
+              "doc page %s installed (doc/ and studies/ side by side: the relative links hold)" % page)
     share = os.path.join(prefix, "share", "liggghts-crush")
     for name in ("examples/single_grain/plane.stl", "examples/fontainebleau/in.triaxial_box", "post/critical_state.py"):
         check(os.path.exists(os.path.join(share, name)), "%s installed (the mesh-wall single grain, the decks, "

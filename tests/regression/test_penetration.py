@@ -3,7 +3,7 @@
 analytic cone and shaft), those meshes pushed into a bed of grains by fix move/mesh, feeding fix
 crush through fix wall/gran hertz/scaled, and the scene's decks on a small chamber (in.chamber,
 in.cone: 3 D_c of penetration into some 700 grains, D_c / d50 = 2.1), with post/penetration.py on
-their outputs; post/penetration_stats.py on stand-in study CSVs and on doc/penetration_study.csv (the
+their outputs; post/penetration_stats.py on stand-in study CSVs and on studies/penetration/penetration_study.csv (the
 cases stats_*, which need no liggghts).
 
   python3 test_penetration.py LIGGGHTS WORKDIR CASE"""
@@ -38,7 +38,7 @@ CHAMBER = {"N": 80, "width": 6, "depth": 3, "below": 2, "sigma_lim0": 5e8}
 DC = 0.0357
 STATS = os.path.join(ROOT, "post", "penetration_stats.py")
 STUDY = os.path.join(ROOT, "scripts", "penetration_study.sh")
-STUDY_CSV = os.path.join(ROOT, "doc", "penetration_study.csv")
+STUDY_CSV = os.path.join(ROOT, "studies", "penetration", "penetration_study.csv")
 SEEDS = ("15485863", "179424673", "373587883")
 DEFAULTS_NAMED = {"tip_shape": "cone", "sigma_lim0": "5e9", "neighbor_style": "multi"}  # in.cone's
 
@@ -165,7 +165,7 @@ def case_pile_short(liggghts, work, ranks):
     # the base carries q_b, some 20 times the chamber's 100 kPa: the rings just below it (r < R,
     # -R < h < 0) hold a vertical stress far above the chamber's (a wrong sign, frame or volume would
     # not); beside the shaft, a grain or two per ring here, the stresses are the relaxed ones of
-    # doc/penetration.md and are not checked
+    # studies/penetration/README.md and are not checked
     below = [r["sigma_zz"] for r in rings if r["r_over_R"] < 1 and -1 < r["h_over_R"] < 0]
     check(len(shaft) >= 3 and len(below) >= 2 and sum(below) / len(below) > 5 * 1e5
           and os.path.exists(os.path.join(folder, "pile_maps.png")),
@@ -773,15 +773,15 @@ def case_stats_groups(liggghts, work):
 
 
 def case_stats_study_csv(liggghts, work):
-    """doc/penetration_study.csv has penetration_study.sh's columns, and penetration_stats.py on it
+    """studies/penetration/penetration_study.csv has penetration_study.sh's columns, and penetration_stats.py on it
     puts no pile with a cone nor the weak sand with Table 1's (told from the case names: pile_*,
     weak_*), warns of no two rows of one setting and seed that differ; the weak pile with crushing
     everywhere (the "dense, crushing 1, 100 kPa, 2.11 MPa, 61 events" setting the older grouping
-    called a cone) is a setting of its own; and q_c falls with v by doc/penetration.md's 0.19 +- 0.05
+    called a cone) is a setting of its own; and q_c falls with v by studies/penetration/README.md's 0.19 +- 0.05
     MPa per halving (the 30 rate runs, one intercept per seed)."""
     del liggghts, work
     header = open(STUDY_CSV).readline().strip().split(",")
-    check(header == study_header(), "doc/penetration_study.csv has the columns penetration_study.sh writes (%d)" % len(header))
+    check(header == study_header(), "studies/penetration/penetration_study.csv has the columns penetration_study.sh writes (%d)" % len(header))
     table, members, rest, warnings = run_stats(STUDY_CSV, "--fit-log2", "v")
     check(not warnings, "no two rows of one setting and seed differ in q_c")
     mixed = []

@@ -71,36 +71,38 @@ def case_missing_module(liggghts, work):
         check(command in err, "%s names the installed command %s" % (module, command))
 
 
-
 def case_tables(liggghts, work):
-    """post/tables.py: every results table in doc/ is the one its CSVs give (--check on the repository's
-    pages: a number typed into a table, or a CSV row added without rewriting the page, fails here).
-    On a copy of doc/: a cell edited by hand is found by --check (exit 1, naming the table) and put
-    back by a plain run; a CSV row added changes the table (O-2 gains a seed); a page without a
-    table's markers is refused by name."""
+    """post/tables.py: every results table of studies/ is the one its CSVs give (--check on the
+    repository's pages: a number typed into a table, or a CSV row added without rewriting the page,
+    fails here). On a copy of studies/: a cell edited by hand is found by --check (exit 1, naming the
+    table) and put back by a plain run; a CSV row added changes the table (O-2 gains a seed); a page
+    without a table's markers is refused by name."""
     import shutil
+    del liggghts
     tool = os.path.join(ROOT, "post", "tables.py")
     rc, out, err = run([sys.executable, tool, "--check"], ROOT)
-    check(rc == 0 and "up to date" in out, "doc/'s tables are written from their CSVs: %s%s" % (out.strip(), err[-300:]))
-    doc = os.path.join(work, "doc")
-    shutil.rmtree(doc, ignore_errors=True)
-    shutil.copytree(os.path.join(ROOT, "doc"), doc)
-    page = os.path.join(doc, "results.md")
+    check(rc == 0 and "up to date" in out, "the studies' tables are written from their CSVs: %s%s" % (out.strip(), err[-300:]))
+    root = os.path.join(work, "root")
+    shutil.rmtree(root, ignore_errors=True)
+    shutil.copytree(os.path.join(ROOT, "studies"), os.path.join(root, "studies"))
+    study = os.path.join(root, "studies", "fontainebleau")
+    page = os.path.join(study, "README.md")
     text = open(page).read()
     row = next(line for line in text.splitlines() if line.startswith("| O-2 | "))
     open(page, "w").write(text.replace(row, row.replace("| O-2 | ", "| O-2 | 9", 1)))
-    rc, out, err = run([sys.executable, tool, "--check", "--doc", doc], ROOT)
-    check(rc == 1 and "table3 in results.md" in err, "a hand-edited cell is found: %s" % err.strip())
-    rc, out, err = run([sys.executable, tool, "--doc", doc], ROOT)
+    rc, out, err = run([sys.executable, tool, "--check", "--root", root], ROOT)
+    check(rc == 1 and "table3 in studies/fontainebleau/README.md" in err, "a hand-edited cell is found: %s" % err.strip())
+    rc, out, err = run([sys.executable, tool, "--root", root], ROOT)
     check(rc == 0 and open(page).read() == text, "a plain run writes the table back as the CSV gives it")
-    with open(os.path.join(doc, "table3_runs.csv"), "a") as f:
+    with open(os.path.join(study, "table3_runs.csv"), "a") as f:
         f.write("O,2,999,2,1340,5000,280,40.0\n")
-    run([sys.executable, tool, "--doc", doc], ROOT)
+    run([sys.executable, tool, "--root", root], ROOT)
     seeds = next(line for line in open(page).read().splitlines() if line.startswith("| O-2 | ")).split("|")[2].strip()
     check(seeds == str(int(row.split("|")[2]) + 1), "a run added to the CSV is a seed more in the table (%s)" % seeds)
     open(page, "w").write(text.replace("<!-- end table table3 -->", ""))
-    rc, out, err = run([sys.executable, tool, "--check", "--doc", doc], ROOT)
+    rc, out, err = run([sys.executable, tool, "--check", "--root", root], ROOT)
     check(rc != 0 and "no markers of table table3" in err, "a page without the markers is refused: %s" % err.strip())
+
 
 if __name__ == "__main__":
     test_main(globals(), sys.argv[1:])
