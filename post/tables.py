@@ -18,7 +18,8 @@ interval excludes zero, and Holm's correction where a table makes many compariso
 
 --add-run adds the row of one finished run of scripts/fontainebleau_runs.sh (its line of the runner's
 runtimes.csv, and its history beside it in <TEST>_s<SEED>/) to studies/fontainebleau/table3_runs.csv,
-once (scripts/table3_runs.sh calls it as each run lands).
+once (scripts/table3_runs.sh calls it as each run lands); with --variant NAME (a row of
+studies/fontainebleau/io_variants.csv) to io_mechanisms_runs.csv instead (scripts/io_mechanisms.sh).
 """
 import argparse
 import importlib
@@ -66,9 +67,12 @@ def main(argv=None):
     parser.add_argument("--root", default=ROOT, help="the repository root that holds studies/ (default: this one)")
     parser.add_argument("--add-run", nargs=2, metavar=("RUNTIMES", "TEST:SEED"),
                         help="add a finished run's row to studies/fontainebleau/table3_runs.csv")
+    parser.add_argument("--variant", help="with --add-run: the row of io_variants.csv the run belongs to (its row goes "
+                        "to io_mechanisms_runs.csv)")
     a = parser.parse_args(argv)
     if a.add_run:
-        fontainebleau.add_run(a.add_run[0], a.add_run[1], os.path.dirname(os.path.join(a.root, fontainebleau.PAGE)))
+        fontainebleau.add_run(a.add_run[0], a.add_run[1], os.path.dirname(os.path.join(a.root, fontainebleau.PAGE)),
+                              a.variant)
         return
     tables = registry()
     if a.list:

@@ -44,6 +44,13 @@ def change_cell(c, digits, p_holm):
                                            "" if c["design"].startswith("paired") else " u")
 
 
+def interval_cell(c, digits):
+    """A change of compare() as 'change (low .. high)'; the change alone where it has no interval."""
+    if c["low"] != c["low"]:
+        return "%+.*f" % (digits, c["change"])
+    return "%+.*f (%+.*f .. %+.*f)" % (digits, c["change"], digits, c["low"], digits, c["high"])
+
+
 def conclusions(rows):
     """A study's opening table: rows of (conclusion, measured, runs, command), the measured cell written
     from the CSVs (a mean or change with its 95% interval, and whether the one rule resolves it)."""

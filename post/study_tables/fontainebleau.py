@@ -3,13 +3,14 @@ from seeds, the isotropic against the oedometric tests paired by seed, the readi
 draw, and the upscaling. add_run() adds a finished run of scripts/fontainebleau_runs.sh to
 table3_runs.csv."""
 import csv
+import math
 import os
 import statistics as py_statistics
 import sys
 
 from post.paper import TABLE3
-from post.seeds import compare, holm
-from post.study_tables.common import cell, change_cell, read_rows, seed_values
+from post.seeds import compare, holm, interval, statistics
+from post.study_tables.common import cell, change_cell, conclusions, interval_cell, read_rows, seed_values
 
 PAGE = "studies/fontainebleau/README.md"
 
@@ -28,8 +29,12 @@ def runs_by_test(rows):
 
 
 def against_paper(values, paper):
-    """The runs' mean over the paper's value, in percent, with its 95% t interval."""
-    return cell([100.0 * (v / paper - 1.0) for v in values])
+    """The runs' mean over the paper's value, in percent, with its 95% t interval (signed)."""
+    n, mean, _, se = statistics([100.0 * (v / paper - 1.0) for v in values])
+    if n < 2:
+        return "%+.0f" % mean if n else ""
+    low, high, _ = interval(mean, se, n - 1)
+    return "%+.0f (%+.0f .. %+.0f)" % (mean, low, high)
 
 
 def table3(folder):
@@ -57,27 +62,28 @@ def table3(folder):
     return "\n".join(lines)
 
 
+IO_WHERE = (("events", "the tests' ends"), ("events_first_load", "the first load"),
+            ("events_p10MPa", "p' = 10 MPa"), ("events_p50MPa", "p' = 50 MPa"))
+
+
 def table3_io(folder):
     runs = runs_by_test(read_rows(os.path.join(folder, "table3_runs.csv")))
-    lines = ["| N | where | seeds paired | I - O events per initial grain | 95% interval | p | resolved | design | "
-             "paper |", "|---|---|---|---|---|---|---|---|---|"]
+    found = []
     for n in ("2", "1.5", "1"):
         o, i = runs.get(("O", n), {}), runs.get(("I", n), {})
-        paper = (PAPER[("I", n)][2] - PAPER[("O", n)][2]) / float(PAPER[("O", n)][0])
-        common = [s for s in o if s in i]
-        if not common:
-            lines.append("| %s | the tests' ends | 0 | not run | | | | | %+.4f |" % (n, paper))
-            continue
-        for column, where in (("events", "the tests' ends"), ("events_first_load", "the first load"),
-                              ("events_p10MPa", "p' = 10 MPa"), ("events_p50MPa", "p' = 50 MPa")):
+        for column, where in IO_WHERE if any(s in i for s in o) else ():
             per_grain = lambda r: float(r[column]) / float(r["initial_particles"])  # noqa: E731
-            c = compare(dict((s, per_grain(o[s])) for s in o if o[s].get(column)),
-                        dict((s, per_grain(i[s])) for s in i if i[s].get(column)))
-            span = "%+.4f .. %+.4f" % (c["low"], c["high"]) if c["low"] == c["low"] else ""
-            p = "%.2g" % c["p"] if c["p"] == c["p"] else ""
-            lines.append("| %s | %s | %d | %+.4f +- %.4f | %s | %s | %s | %s | %s |"
-                         % (n, where, c["pairs"], c["change"], c["se"], span, p, c["resolved"], c["design"],
-                            "%+.4f" % paper if column == "events" else ""))
+            found.append((n, column, where, compare(dict((s, per_grain(o[s])) for s in o if o[s].get(column)),
+                                                    dict((s, per_grain(i[s])) for s in i if i[s].get(column)))))
+    adjusted = holm([c["p"] for *_, c in found])
+    lines = ["| N | where | seeds paired | I - O events per initial grain (95%% interval) | p | resolved | Holm (%d) "
+             "| design | paper |" % len(found), "|---|---|---|---|---|---|---|---|---|"]
+    for (n, column, where, c), p_holm in zip(found, adjusted):
+        paper = (PAPER[("I", n)][2] - PAPER[("O", n)][2]) / float(PAPER[("O", n)][0])
+        lines.append("| %s | %s | %d | %s | %s | %s | %s | %s | %s |"
+                     % (n, where, c["pairs"], interval_cell(c, 4), "%.2g" % c["p"] if c["p"] == c["p"] else "",
+                        c["resolved"], ("yes" if p_holm < 0.05 else "no") if p_holm == p_holm else "", c["design"],
+                        "%+.4f" % paper if column == "events" else ""))
     return "\n".join(lines)
 
 
@@ -121,14 +127,12 @@ def readings_changes(folder):
                 if len(ref) > 1 and len(other) > 1:
                     found.append((name, test, label, digits, compare(ref, other)))
     adjusted = holm([c["p"] for *_, c in found])
-    lines = ["| reading | test | measure | change from clipped | 95%% interval | p | resolved | Holm (%d) | design |"
-             % len(found), "|---|---|---|---|---|---|---|---|---|"]
+    lines = ["| reading | test | measure | change from clipped (95%% interval) | p | resolved | Holm (%d) | design |"
+             % len(found), "|---|---|---|---|---|---|---|---|"]
     for (name, test, label, digits, c), p_holm in zip(found, adjusted):
-        d = digits + 1
-        span = "%+.*f .. %+.*f" % (d, c["low"], d, c["high"]) if c["low"] == c["low"] else ""
         survives = ("yes" if p_holm < 0.05 else "no") if p_holm == p_holm else ""
-        lines.append("| %s | %s-2 | %s | %+.*f +- %.*f | %s | %s | %s | %s | %s |"
-                     % (name, test, label, d, c["change"], d, c["se"], span, "%.2g" % c["p"] if c["p"] == c["p"] else "",
+        lines.append("| %s | %s-2 | %s | %s | %s | %s | %s | %s |"
+                     % (name, test, label, interval_cell(c, digits + 1), "%.2g" % c["p"] if c["p"] == c["p"] else "",
                         c["resolved"], survives, c["design"]))
     return "\n".join(lines)
 
@@ -139,7 +143,8 @@ UPSCALING_MEASURES = [("n_1MPa", "n at 1 MPa", 4), ("n_10MPa", "n at 10 MPa", 4)
                       ("events_per_grain", "events per initial grain", 3), ("yield_MPa", "yield stress (MPa)", 1)]
 
 
-def upscaling(folder):
+def upscaling_changes(folder):
+    """The runs by (test, N) and every change against N = 1 by the one rule, with Holm's p over them."""
     rows = read_rows(os.path.join(folder, "upscaling_runs.csv"))
     runs = dict(((r["test"], r["N"]), {}) for r in rows)
     for r in rows:
@@ -152,7 +157,12 @@ def upscaling(folder):
                 if len(one) > 1 and len(other) > 1:
                     found.append(((test, n, column), compare(one, other)))
     adjusted = dict(zip((k for k, _ in found), holm([c["p"] for _, c in found])))
-    changes = dict(found)
+    return runs, dict(found), adjusted
+
+
+def upscaling(folder):
+    runs, changes, adjusted = upscaling_changes(folder)
+    found = changes
     lines = ["| measure | O-1 | O-1.5 - O-1 | O-2 - O-1 | I-1 | I-1.5 - I-1 | I-2 - I-1 |", "|---|---|---|---|---|---|---|"]
     for column, label, digits in UPSCALING_MEASURES:
         cells = []
@@ -169,6 +179,86 @@ def upscaling(folder):
         "Welch; the others paired on the seeds both ran)" % len(found)
 
 
+def per_grain_changes(runs, n, column="events"):
+    """I - O events per initial grain at scale n, by the one rule (paired by seed where it pairs)."""
+    per_grain = lambda r: float(r[column]) / float(r["initial_particles"])  # noqa: E731
+    return compare(dict((s, per_grain(r)) for s, r in runs.get(("O", n), {}).items()),
+                   dict((s, per_grain(r)) for s, r in runs.get(("I", n), {}).items()))
+
+
+def io_verdict(folder):
+    """The candidate variants of io_mechanisms (the decks' own left out) whose I - O at the tests' ends is
+    resolved above zero, and every candidate run on three or more seeds."""
+    rows = read_rows(os.path.join(folder, "io_mechanisms_runs.csv"))
+    above, run = [], []
+    for variant in [v for v in io_variants(folder) if v != "decks"]:
+        o = dict((r["seed"], float(r["events"]) / float(r["initial_particles"])) for r in rows
+                 if r["variant"] == variant and r["test"] == "O")
+        i = dict((r["seed"], float(r["events"]) / float(r["initial_particles"])) for r in rows
+                 if r["variant"] == variant and r["test"] == "I")
+        if len(o) < 3 or len(i) < 3:
+            continue
+        c = compare(o, i)
+        run.append((variant, c))
+        if c["low"] > 0:
+            above.append(variant)
+    return above, run
+
+
+def conclusions_fontainebleau(folder):
+    """The study's answers, each from its CSV."""
+    runs = runs_by_test(read_rows(os.path.join(folder, "table3_runs.csv")))
+    events = lambda key: [float(r["events"]) for r in runs.get(key, {}).values()]  # noqa: E731
+    seeds = lambda *keys: "%s seeds" % "/".join(str(len(runs.get(k, {}))) for k in keys)  # noqa: E731
+    vs_paper = lambda key: "%s-%s %s%%" % (key[0], key[1], against_paper(events(key), PAPER[key][2]))  # noqa: E731
+    first = [100.0 * float(r["events_first_load"]) / float(r["events"]) for k in ORDER for r in runs.get(k, {}).values()]
+    io = [(n, per_grain_changes(runs, n)) for n in ("2", "1.5", "1")]
+    paper_io = lambda n: (PAPER[("I", n)][2] - PAPER[("O", n)][2]) / float(PAPER[("O", n)][0])  # noqa: E731
+    above, tried = io_verdict(folder)
+    if above:
+        mechanisms = "%s reverses it" % ", ".join(above)
+    else:
+        mechanisms = ("None of the %d candidate mechanisms run reverses it" % len(tried)) if tried else "No candidate mechanism has run"
+    _, ups, ups_holm = upscaling_changes(folder)
+    readings_rows = read_rows(os.path.join(folder, "readings_runs.csv"))
+    reading = lambda f: reading_values(readings_rows, f, "O", "events_per_grain").values()  # noqa: E731
+    o_paper = PAPER[("O", "2")][2] / float(PAPER[("O", "2")][0])
+    bounds = []
+    for key in (("O", "1"), ("I", "1")):
+        n, mean, _, se = statistics([100.0 * (v / PAPER[key][2] - 1.0) for v in events(key)])
+        bounds += list(interval(mean, se, n - 1)[:2]) if n > 1 else [mean]
+    within = math.ceil(max(abs(b) for b in bounds))
+    rows = [
+        ("At N = 1 the events lie within %d%% of Table 3's." % within,
+         "events vs the paper: %s; %s" % (vs_paper(("O", "1")), vs_paper(("I", "1"))), seeds(("O", "1"), ("I", "1")),
+         "bash scripts/table3_runs.sh runs/table3 O1 I1"),
+        ("The coarser oedometric samples (N = 2, 1.5) break more than Table 3's.",
+         "%s; %s" % (vs_paper(("O", "2")), vs_paper(("O", "1.5"))), seeds(("O", "2"), ("O", "1.5")),
+         "bash scripts/table3_runs.sh runs/table3 O2 O1.5"),
+        ("Most events are the zero-strength sixth of the grains breaking at the first load.",
+         "share of a run's events at the first load: %s%%" % cell(first), "%d runs" % len(first),
+         "bash scripts/table3_runs.sh"),
+        ("The paper's isotropic tests break more per grain than its oedometric ones; ours do not.",
+         "; ".join("N %s: I - O %s (paper %+.3f)" % (n, interval_cell(c, 4), paper_io(n)) for n, c in io),
+         "5 seeds, paired", "bash scripts/table3_runs.sh"),
+        ("%s at N = 2." % mechanisms,
+         "; ".join("%s %s" % (v, interval_cell(c, 4)) for v, c in tried), "5 seeds each, paired",
+         "bash scripts/io_mechanisms.sh runs/io"),
+        ("Upscaling (N = 1.5 and 2 against N = 1) changes no measure beyond the seeds' scatter.",
+         "%d of %d changes resolved, %d after Holm" % (sum(c["resolved"] == "yes" for c in ups.values()), len(ups),
+                                                       sum(p < 0.05 for p in ups_holm.values())),
+         "3 - 5 seeds", "bash scripts/upscaling_seeds.sh"),
+        ("Table 3's counts need the zero-strength reading: the truncated normal breaks far too few.",
+         "O-2 events / N_i at 100 MPa: clipped %s, normal %s, paper %.3f" % (cell(reading("clipped"), 3),
+                                                                             cell(reading("normal"), 3), o_paper),
+         "5 seeds", "bash scripts/strength_readings.sh"),
+        ("Matching the yield stress with the truncated normal breaks several times Table 3's grains.",
+         "O-2 events / N_i at 100 MPa, sigma_lim0 0.88 GPa: %s" % cell(reading("matched_0.88GPa"), 3), "5 seeds",
+         "SIGMA_LIM0_MATCHED=8.8e8 bash scripts/strength_readings.sh runs/readings matched"),
+    ]
+    return conclusions(rows)
+
+
 def history_events(path):
     """From a run's history: the events at its first row (the first load) and where the mean stress
     p' first reaches 10 and 50 MPa ('' where it never does)."""
@@ -177,21 +267,16 @@ def history_events(path):
     return {"events_first_load": rows[0]["events"], "events_p10MPa": first_at(1e7), "events_p50MPa": first_at(5e7)}
 
 
-def add_run(runtimes, spec, folder):
-    """Adds one run's row to studies/fontainebleau/table3_runs.csv (once): its line of the runner's runtimes.csv and the
-    events of its history (the run's folder beside runtimes.csv, as fontainebleau_runs.sh names it)."""
-    test, seed = spec.split(":")
-    row = next((r for r in read_rows(runtimes) if r["test"] == spec), None)
-    if row is None:
-        sys.exit("tables.py: %s has no row %s" % (runtimes, spec))
-    history = os.path.join(os.path.dirname(runtimes), "%s_s%s" % (test, seed), "history_%s.csv" % test)
-    new = {"test": test[0], "N": test[1:], "seed": seed, "ranks": row["ranks"],
-           "initial_particles": row["initial_particles"], "final_particles": row["final_particles"],
-           "events": row["events"], "seconds": row["seconds"]}
-    new.update(history_events(history))
-    table = os.path.join(folder, "table3_runs.csv")
+def history_end(path):
+    """From a run's history: K0 and the mean stress p' (MPa) at its last row."""
+    last = list(csv.DictReader(open(path)))[-1]
+    return {"K0_end": "%.4f" % float(last["K0"]), "p_end_MPa": "%.2f" % (float(last["p"]) / 1e6)}
+
+
+def append_once(table, new, key):
+    """Appends the row to the CSV unless a row with the same key columns is there."""
     rows = read_rows(table) if os.path.exists(table) else []
-    if any((r["test"], r["N"], r["seed"]) == (new["test"], new["N"], new["seed"]) for r in rows):
+    if any(tuple(r.get(k) for k in key) == tuple(new[k] for k in key) for r in rows):
         return
     with open(table, "w", newline="") as f:
         writer = csv.DictWriter(f, fieldnames=list(new), lineterminator="\n")
@@ -199,5 +284,65 @@ def add_run(runtimes, spec, folder):
         writer.writerows(rows + [new])
 
 
+def add_run(runtimes, spec, folder, variant=None):
+    """Adds one run's row (once): its line of the runner's runtimes.csv and the events of its history
+    (the run's folder beside runtimes.csv, as fontainebleau_runs.sh names it), to table3_runs.csv, or
+    with a variant (a row of io_variants.csv) to io_mechanisms_runs.csv with K0 and p' at the end."""
+    test, seed = spec.split(":")
+    row = next((r for r in read_rows(runtimes) if r["test"] == spec), None)
+    if row is None:
+        sys.exit("tables.py: %s has no row %s" % (runtimes, spec))
+    history = os.path.join(os.path.dirname(runtimes), "%s_s%s" % (test, seed), "history_%s.csv" % test)
+    new = {"variant": variant} if variant else {}
+    new.update({"test": test[0], "N": test[1:], "seed": seed, "ranks": row["ranks"],
+                "initial_particles": row["initial_particles"], "final_particles": row["final_particles"],
+                "events": row["events"], "seconds": row["seconds"]})
+    new.update(history_events(history))
+    if variant:
+        new.update(history_end(history))
+        append_once(os.path.join(folder, "io_mechanisms_runs.csv"), new, ("variant", "test", "N", "seed"))
+    else:
+        append_once(os.path.join(folder, "table3_runs.csv"), new, ("test", "N", "seed"))
+
+
+def io_variants(folder):
+    """{variant: (the deck variables, what it tests)} of io_variants.csv, in its order."""
+    return dict((r["variant"], (r["vars"], r["tests"])) for r in read_rows(os.path.join(folder, "io_variants.csv")))
+
+
+def io_mechanisms(folder):
+    """Each candidate mechanism of the paper's isotropic-over-oedometric breakage at N = 2: the events
+    per initial grain of O-2 and I-2, their paired difference at the tests' ends and after the first
+    load, and the oedometer's K0 and p' at sigma_v = 100 MPa."""
+    rows = read_rows(os.path.join(folder, "io_mechanisms_runs.csv"))
+    paper = (PAPER[("I", "2")][2] - PAPER[("O", "2")][2]) / float(PAPER[("O", "2")][0])
+    lines = ["| variant | what it tests | seeds | O-2 events / N_i | I-2 events / N_i | I - O at the ends (95%) | p "
+             "| resolved | I - O after the first load (95%) | O-2 K0 at the end | O-2 p' at the end (MPa) |",
+             "|---|---|---|---|---|---|---|---|---|---|---|"]
+    per_grain = lambda r, column: float(r[column]) / float(r["initial_particles"])  # noqa: E731
+    for variant, (_, tests) in io_variants(folder).items():
+        runs = {"O": {}, "I": {}}
+        for r in rows:
+            if r["variant"] == variant and r["N"] == "2":
+                runs[r["test"]].setdefault(r["seed"], r)
+        if not runs["O"] or not runs["I"]:
+            lines.append("| %s | %s | 0 | not run | | | | | | | |" % (variant, tests))
+            continue
+        end = compare(dict((s, per_grain(r, "events")) for s, r in runs["O"].items()),
+                      dict((s, per_grain(r, "events")) for s, r in runs["I"].items()))
+        after = compare(dict((s, per_grain(r, "events") - per_grain(r, "events_first_load")) for s, r in runs["O"].items()),
+                        dict((s, per_grain(r, "events") - per_grain(r, "events_first_load")) for s, r in runs["I"].items()))
+        lines.append("| %s | %s | %d | %s | %s | %s | %s | %s | %s | %s | %s |" % (
+            variant, tests, end["pairs"], cell([per_grain(r, "events") for r in runs["O"].values()], 4),
+            cell([per_grain(r, "events") for r in runs["I"].values()], 4), interval_cell(end, 4),
+            "%.2g" % end["p"] if end["p"] == end["p"] else "", end["resolved"], interval_cell(after, 4),
+            cell([float(r["K0_end"]) for r in runs["O"].values()], 3),
+            cell([float(r["p_end_MPa"]) for r in runs["O"].values()], 1)))
+    lines.append("| the paper (one run each) | | 1 | %.4f | %.4f | %+.4f | | | | | |" % (
+        PAPER[("O", "2")][2] / float(PAPER[("O", "2")][0]), PAPER[("I", "2")][2] / float(PAPER[("I", "2")][0]), paper))
+    return "\n".join(lines)
+
+
 TABLES = {"table3": table3, "table3_io": table3_io, "readings": readings, "readings_changes": readings_changes,
-          "upscaling": upscaling}
+          "upscaling": upscaling, "io_mechanisms": io_mechanisms,
+          "conclusions_fontainebleau": conclusions_fontainebleau}
