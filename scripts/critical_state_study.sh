@@ -17,7 +17,7 @@
 # p0 = 0.1 0.5 2 5 10 20 50 MPa, normal at the same, rolling at 2 10 50 MPa, each dense and loose,
 # path sigma3;
 # constant p' (path p) for rotation0 at 10 MPa. The case "fit" only refits and redraws from the
-# cases already run; "seeds" and "precrushed" are the groups named below. Environment MAX_DILATANCY:
+# cases already run; "seeds", "precrushed" and "lab" are the groups named below. Environment MAX_DILATANCY:
 # post/critical_state.py's --max-dilatancy (tests still changing volume left out of the fits).
 # Environment: JOBS (tests run at once, one rank each; default 2), LIGGGHTS (build/liggghts),
 # AXIAL_MAX (0.3).
@@ -83,8 +83,11 @@ run_case() {
 
 # the named groups of studies/critical_state/README.md: seeds (normal at 2, 10 and 50 MPa with a second seed),
 # precrushed (weak and weak_pre50 dense at 2 and 10 MPa, three seeds each; the uncrushable control
-# none dense at 0.5 - 50 MPa and loose at 10 - 50 MPa, three seeds at 10 and 50 MPa)
+# none dense at 0.5 - 50 MPa and loose at 10 - 50 MPa, three seeds at 10 and 50 MPa), lab (the
+# decks' reading, rotation0, loose at 0.05 and 0.4 MPa, the ends of the range where the laboratory
+# measured NE34's phi_cs, five seeds each; run it with AXIAL_MAX=0.4 to come nearer the critical state)
 seeds=(15485863 179424673 373587883)
+more_seeds=(275604541 1299709)
 expand() {
   local sample p0 seed
   case $1 in
@@ -94,6 +97,7 @@ expand() {
       for p0 in 0.5 2 5 10 20 50; do echo "none:dense:$p0"; done
       for p0 in 10 20 50; do echo "none:loose:$p0"; done
       for p0 in 10 50; do for seed in "${seeds[@]:1}"; do echo "none:dense:$p0:sigma3:$seed"; done; done ;;
+    lab) for p0 in 0.05 0.4; do for seed in "${seeds[@]}" "${more_seeds[@]}"; do echo "rotation0:loose:$p0:sigma3:$seed"; done; done ;;
     *) echo "$1" ;;
   esac
 }

@@ -9,7 +9,7 @@ import statistics as py_statistics
 import sys
 
 from post.paper import TABLE3
-from post.seeds import compare, holm, interval, statistics
+from post.seeds import compare, holm, interval, statistics, t_tail, welch_df
 from post.study_tables.common import cell, change_cell, conclusions, interval_cell, read_rows, seed_values
 
 PAGE = "studies/fontainebleau/README.md"
@@ -84,6 +84,33 @@ def table3_io(folder):
                      % (n, where, c["pairs"], interval_cell(c, 4), "%.2g" % c["p"] if c["p"] == c["p"] else "",
                         c["resolved"], ("yes" if p_holm < 0.05 else "no") if p_holm == p_holm else "", c["design"],
                         "%+.4f" % paper if column == "events" else ""))
+    return "\n".join(lines)
+
+
+def io_scatter(folder):
+    """Could one run of each test give the paper's I - O by chance? The standard deviation of a single
+    run's events per initial grain over the seeds, O and I, that of a single unpaired difference, the
+    paper's difference in its units, and the chance that one O run and one I run of this model differ
+    by the paper's difference or more (one-sided, Student's t of the prediction: the runs' mean
+    difference, the sd's own uncertainty, Welch's df)."""
+    runs = runs_by_test(read_rows(os.path.join(folder, "table3_runs.csv")))
+    lines = ["| N | seeds | sd of one O-N run | sd of one I-N run | sd of one unpaired I - O | paper's I - O | "
+             "paper's I - O / that sd | P(one pair of runs reaches it) |", "|---|---|---|---|---|---|---|---|"]
+    for n in ("2", "1.5", "1"):
+        per_grain = [[float(r["events"]) / float(r["initial_particles"]) for r in runs.get((test, n), {}).values()]
+                     for test in ("O", "I")]
+        if min(len(v) for v in per_grain) < 2:
+            continue
+        sd_o, sd_i = (py_statistics.stdev(v) for v in per_grain)
+        sd = math.hypot(sd_o, sd_i)
+        paper = (PAPER[("I", n)][2] - PAPER[("O", n)][2]) / float(PAPER[("O", n)][0])
+        n_o, n_i = len(per_grain[0]), len(per_grain[1])
+        mean = py_statistics.mean(per_grain[1]) - py_statistics.mean(per_grain[0])
+        spread = math.sqrt(sd_o ** 2 * (1 + 1.0 / n_o) + sd_i ** 2 * (1 + 1.0 / n_i))
+        df = welch_df(sd_o * math.sqrt(1 + 1.0 / n_o), n_o, sd_i * math.sqrt(1 + 1.0 / n_i), n_i)
+        chance = t_tail((paper - mean) / spread, df) / 2.0
+        lines.append("| %s | %d, %d | %.4f | %.4f | %.4f | %+.4f | %.1f | %.2g |"
+                     % (n, n_o, n_i, sd_o, sd_i, sd, paper, paper / sd, chance))
     return "\n".join(lines)
 
 
@@ -344,5 +371,5 @@ def io_mechanisms(folder):
 
 
 TABLES = {"table3": table3, "table3_io": table3_io, "readings": readings, "readings_changes": readings_changes,
-          "upscaling": upscaling, "io_mechanisms": io_mechanisms,
+          "upscaling": upscaling, "io_mechanisms": io_mechanisms, "io_scatter": io_scatter,
           "conclusions_fontainebleau": conclusions_fontainebleau}
