@@ -3,6 +3,7 @@
 scripts/critical_state_study.sh), the critical state line and plane, for studies/critical_state/README.md.
 
     post/critical_state.py [--out DIR] [--window W] [--max-dilatancy D] FOLDER ...
+    post/critical_state.py --from-csv [--out DIR] [--max-dilatancy D] critical_states.csv ...
 
 Reads every history_T<sample><N>.csv under the given folders (a test's folder is named
 <sample>_<p0>MPa[_<path>][_s<seed>] inside a folder named after its variant, e.g. rotation0/dense_2MPa;
@@ -21,20 +22,26 @@ each variant with its pre-crushed samples (variant_pre<P>: one reading, gradings
     both together, and two curved lines through the same points (fit_curved);
   - the critical state plane e_cs = Gamma_0 - lambda ln(p'/1 kPa) - beta I_G of both samples together,
     and the curved plane e_cs = e_Gamma0 - lambda_c (p'/p_a)^0.7 - beta I_G, with the residuals of each
-    test;
-each coefficient with its standard error (a plane over a narrow range of I_G cannot separate beta);
-and, paired by seed (the seed fixes the sample and the strengths; post/seeds.py's statistics):
+    test; for rotation0 + normal the curved plane also with a 0/1 indicator of the strength reading in
+    place of I_G and beside it (over two readings the grading and the reading go together);
+each coefficient with its standard error in fit.md, with its 95% t interval (df = tests - coefficients)
+on the study page (a plane over a narrow range of I_G cannot separate beta); and, by seed (the seed
+fixes the sample and the strengths; post/seeds.py's one rule, compare(), Holm over each table):
   - each pre-crushed sample against its variant at the same sample, p0 and path: the changes of e_cs,
-    I_G and ln p' at the critical state and beta = -de_cs / dI_G, per seed and as mean +- standard error;
+    I_G and ln p' at the critical state, and beta = -de_cs / dI_G of each common seed with their mean's
+    interval;
   - each variant's phi_cs between neighbouring cell pressures that two seeds or more ran.
 --max-dilatancy D leaves the tests whose |dilatancy| at the end exceeds D (still changing volume: not
 at a critical state) out of every fit and pairing; the tables list them and fit.md names them.
 A folder without _s<seed> holds the decks' seed (15485863).
-Writes DIR/critical_states.csv (a row a test), DIR/fit.md (the tables of studies/critical_state/README.md) and
-the figures DIR/figures/critical_state_e_lnp.png (e against ln p', every test's path and critical
+Writes DIR/critical_states.csv (a row a test), DIR/fit.md (the fits with their standard errors and
+residuals) and the figures DIR/figures/critical_state_e_lnp.png (e against ln p', every test's path and critical
 state, the lines), critical_state_IG_p.png (I_G against p' through compression and shearing, the
 critical states), critical_state_plane.png (each plane seen edge-on: e_cs + lambda ln p' against I_G)
-and critical_state_strain.png (q/p and e against axial strain).
+and critical_state_strain.png (q/p and e against axial strain). --from-csv reads the tests from
+critical_states.csv files instead (the study's CSVs) and writes fit.md alone. The study page's tables
+come from the same CSVs through post/tables.py (post/study_tables/critical_state.py: states_table(),
+lines_table(), planes_table(), gradings_table(), angles_table() here).
 """
 import argparse
 import csv
@@ -47,7 +54,8 @@ import sys
 if not __package__:  # run as a file (python3 post/critical_state.py): the folder above post/ holds the package
     sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 from post import requires  # noqa: E402
-from post.seeds import interval, resolved, statistics  # noqa: E402
+from post.seeds import compare, holm, interval, one_sample, resolved  # noqa: E402
+from post.study_tables.common import change_cell  # noqa: E402
 
 requires("critical_state", "numpy")
 
@@ -168,7 +176,7 @@ def least_squares(columns, y):
     residuals = y - a @ coefficients
     total = np.sum((y - y.mean()) ** 2)
     return {"coefficients": coefficients, "residuals": residuals, "se": standard_errors(a, residuals),
-            "rms": float(np.sqrt(np.mean(residuals ** 2))),
+            "df": a.shape[0] - a.shape[1], "rms": float(np.sqrt(np.mean(residuals ** 2))),
             "R2": float(1.0 - np.sum(residuals ** 2) / total) if total > 0 else 1.0}
 
 
@@ -211,12 +219,16 @@ def fit_plane(p_mpa, ig, e):
     return fit
 
 
-def fit_plane_curved(p_mpa, ig, e):
+def fit_plane_curved(p_mpa, ig, e, reading=None):
     """e_Gamma0, lambda_c, beta of e = e_Gamma0 - lambda_c (p'/p_a)^0.7 - beta I_G (Li & Wang's curved
-    line shifted by the grading) and the residuals."""
+    line shifted by the grading) and the residuals; with reading (0/1 a test: which strength reading
+    drew it), also delta of a term - delta reading: whether the grading or the reading shifts the line."""
     x = li_wang_pressure(p_mpa)
-    fit = least_squares([np.ones_like(x), -x, -np.asarray(ig)], e)
-    fit["e_gamma0"], fit["lambda_c"], fit["beta"] = fit["coefficients"]
+    columns = [np.ones_like(x), -x, -np.asarray(ig)] + ([] if reading is None else [-np.asarray(reading, float)])
+    fit = least_squares(columns, e)
+    fit["e_gamma0"], fit["lambda_c"], fit["beta"] = fit["coefficients"][:3]
+    if reading is not None:
+        fit["delta"] = fit["coefficients"][3]
     return fit
 
 
@@ -263,6 +275,27 @@ def write_csv(tests, path):
             w.writerow([t[c] if isinstance(t[c], str) else "%.6g" % t[c] for c in COLUMNS])
 
 
+TEXT_COLUMNS = ("variant", "sample", "path", "seed")
+
+
+def read_csv(paths):
+    """The tests of critical_states.csv files (write_csv()'s rows) as collect() gives them, less their
+    histories: every table and fit from the CSVs alone (no figures). An empty seed is the decks'."""
+    tests = []
+    for path in paths:
+        with open(path) as f:
+            rows = list(csv.DictReader(f))
+        missing = [c for c in COLUMNS if rows and c not in rows[0]]
+        if not rows or missing:
+            sys.exit("post/critical_state.py: %s: %s" % (path, "no rows" if not rows else "no column " + ", ".join(missing)))
+        for row in rows:
+            t = dict((c, row[c] if c in TEXT_COLUMNS else float(row[c] or "nan")) for c in COLUMNS)
+            t["seed"] = t["seed"] or DECKS_SEED
+            tests.append(t)
+    tests.sort(key=lambda t: (t["variant"], t["path"], t["sample"], t["seed"], t["p0_MPa"]))
+    return tests
+
+
 POOLED = ("rotation0", "normal")  # one contact law, two strength readings: two gradings at one p'
 
 
@@ -301,7 +334,8 @@ def at_critical_state(t, max_dilatancy):
 
 def fits(tests, max_dilatancy=None):
     """Per group (groups()): the line of each sample and of both, curved lines, and the plane, over
-    the tests at_critical_state()."""
+    the tests at_critical_state(); for rotation0 + normal also the curved plane with an indicator of
+    the strength reading in place of I_G and beside it (the two gradings are the two readings)."""
     out = {}
     for variant, group in groups(tests):
         group = [t for t in group if at_critical_state(t, max_dilatancy)]
@@ -316,12 +350,14 @@ def fits(tests, max_dilatancy=None):
         if len({t["p0_MPa"] for t in clean}) >= 2:
             # the void ratio at the end with the overlaps' volume taken out of the solid
             result["lines"]["both, overlaps removed"] = lines_through(clean, "e_end_no_overlap")
-        ig = [t["IG_cs"] for t in group]
+        p, ig, e = [t["p_cs_MPa"] for t in group], [t["IG_cs"] for t in group], [t["e_cs"] for t in group]
         if len(group) >= 4 and max(ig) - min(ig) > 1e-6:  # (an uncrushable group has one grading: no plane)
-            result["plane"] = fit_plane([t["p_cs_MPa"] for t in group], [t["IG_cs"] for t in group],
-                                        [t["e_cs"] for t in group])
-            result["curved_plane"] = fit_plane_curved([t["p_cs_MPa"] for t in group], [t["IG_cs"] for t in group],
-                                                      [t["e_cs"] for t in group])
+            result["plane"] = fit_plane(p, ig, e)
+            result["curved_plane"] = fit_plane_curved(p, ig, e)
+            reading = [float(t["variant"] == POOLED[1]) for t in group]
+            if variant == " + ".join(POOLED) and len(group) >= 5 and 0 < sum(reading) < len(group):
+                result["reading_plane"] = fit_plane_curved(p, reading, e)
+                result["reading_and_grading"] = fit_plane_curved(p, ig, e, reading)
         out[variant] = result
     return out
 
@@ -332,10 +368,24 @@ def by_seed(tests, variant, sample, p0, path, max_dilatancy):
                 (variant, sample, p0, path) and at_critical_state(t, max_dilatancy))
 
 
+def of_seeds(seeds, column, transform=float):
+    return dict((s, transform(t[column])) for s, t in seeds.items())
+
+
+def over_seeds(values):
+    """The mean of per-seed values (each seed's beta) against zero with its 95% t interval, in
+    compare()'s terms."""
+    mean, se, df = one_sample(values)
+    low, high, p = interval(mean, se, df)
+    return dict(change=mean, se=se, df=df, low=low, high=high, p=p, resolved=resolved(mean, se, df),
+                pairs=len(values), r=float("nan"), design="paired (%d seeds)" % len(values))
+
+
 def paired_gradings(tests, max_dilatancy=None):
-    """Each pre-crushed variant (variant_pre<P>) against its variant at the same sample, p0 and path,
-    over the seeds both ran: (variant, pre-crushed variant, sample, p0, path, seeds, statistics of
-    de_cs, dI_G,cs, d ln p'_cs and beta = -de_cs / dI_G,cs, each seed's beta)."""
+    """Each pre-crushed variant (variant_pre<P>) against its variant at the same sample, p0 and path:
+    (variant, pre-crushed variant, sample, p0, path, common seeds, compare() of e_cs, I_G,cs and
+    ln p'_cs (post/seeds.py's one rule), over_seeds() of beta = -de_cs / dI_G,cs over the common seeds
+    (None where the gradings do not differ: an uncrushable pair), each seed's beta)."""
     rows = []
     for pre in sorted({t["variant"] for t in tests if "_pre" in t["variant"]}):
         base = pre.split("_pre")[0]
@@ -345,19 +395,20 @@ def paired_gradings(tests, max_dilatancy=None):
             seeds = sorted(set(a) & set(b))
             if not seeds:
                 continue
+            changes = [compare(of_seeds(a, c, f), of_seeds(b, c, f))
+                       for c, f in (("e_cs", float), ("IG_cs", float), ("p_cs_MPa", math.log))]
             de = [b[s]["e_cs"] - a[s]["e_cs"] for s in seeds]
             dig = [b[s]["IG_cs"] - a[s]["IG_cs"] for s in seeds]
-            dlnp = [math.log(b[s]["p_cs_MPa"] / a[s]["p_cs_MPa"]) for s in seeds]
-            beta = [-x / y for x, y in zip(de, dig)]
-            rows.append((base, pre, sample, p0, path, seeds, statistics(de), statistics(dig), statistics(dlnp),
-                         statistics(beta), beta))
+            beta = [-x / y for x, y in zip(de, dig) if y != 0]
+            rows.append((base, pre, sample, p0, path, seeds, *changes,
+                         over_seeds(beta) if len(beta) == len(seeds) else None, beta))
     return rows
 
 
 def paired_angles(tests, max_dilatancy=None):
     """phi_cs of each variant, sample and path between neighbouring cell pressures that two seeds or
-    more ran, over their common seeds: (variant, sample, path, p0 low, p0 high, seeds, statistics of
-    the change)."""
+    more ran: (variant, sample, path, p0 low, p0 high, common seeds, compare() of phi_cs: paired by
+    seed where the one rule pairs, else Welch)."""
     rows = []
     for variant, sample, path in sorted({(t["variant"], t["sample"], t["path"]) for t in tests}):
         levels = {}
@@ -370,48 +421,41 @@ def paired_angles(tests, max_dilatancy=None):
             seeds = sorted(set(levels[lo]) & set(levels[hi]))
             if len(seeds) >= 2:
                 rows.append((variant, sample, path, lo, hi, seeds,
-                             statistics([levels[hi][s]["phi_cs"] - levels[lo][s]["phi_cs"] for s in seeds])))
+                             compare(of_seeds(levels[lo], "phi_cs"), of_seeds(levels[hi], "phi_cs"))))
     return rows
 
 
-def pm(stats, digits):
-    """mean +- standard error of statistics()."""
-    return "%+.*f +- %.*f" % (digits, stats[1], digits, stats[3])
+# the column of each named coefficient in least_squares()'s fits (fit_line, fit_plane, fit_plane_curved)
+COEFFICIENT = {"Gamma": 0, "Gamma0": 0, "e_gamma0": 0, "lambda": 1, "lambda_c": 1, "beta": 2, "delta": 3}
 
 
-def paired_markdown(tests, max_dilatancy):
-    lines = []
-    gradings = paired_gradings(tests, max_dilatancy)
-    if gradings:
-        lines += ["", "### Gradings at one p', paired by seed: beta = -de_cs / dI_G,cs", "",
-                  "| variant | pre-crushed | sample | p'_0 (MPa) | path | seeds | de_cs | dI_G,cs | d ln p'_cs | "
-                  "beta of each seed | beta |", "|---|---|---|---|---|---|---|---|---|---|---|"]
-        for base, pre, sample, p0, path, seeds, de, dig, dlnp, beta, each in gradings:
-            lines.append("| %s | %s | %s | %g | %s | %d | %s | %s | %s | %s | %.3f +- %.3f |"
-                         % (base, pre, sample, p0, path, len(seeds), pm(de, 4), pm(dig, 4), pm(dlnp, 4),
-                            ", ".join("%.3f" % x for x in each), beta[1], beta[3]))
-    angles = paired_angles(tests, max_dilatancy)
-    if angles:
-        lines += ["", "### phi_cs between cell pressures, paired by seed", "",
-                  "| variant | sample | path | p'_0 from (MPa) | to | seeds | change of phi_cs (deg) | 95% interval | "
-                  "resolved |", "|---|---|---|---|---|---|---|---|---|"]
-        for variant, sample, path, lo, hi, seeds, d in angles:
-            low, high, _ = interval(d[1], d[3], d[0] - 1)
-            span = "%+.2f .. %+.2f" % (low, high) if low == low else ""
-            lines.append("| %s | %s | %s | %g | %g | %d | %s | %s | %s |"
-                         % (variant, sample, path, lo, hi, len(seeds), pm(d, 2), span, resolved(d[1], d[3], d[0] - 1)))
-    if max_dilatancy is not None:
-        out = [t for t in tests if not at_critical_state(t, max_dilatancy)]
-        lines += ["", "Left out of every fit and pairing (|dilatancy| at the end above %g): %s"
-                  % (max_dilatancy, ", ".join("%s %s %g MPa seed %s (%.3f)" % (t["variant"], t["sample"], t["p0_MPa"],
-                                                                               t["seed"], t["dilatancy_end"]) for t in out)
-                     if out else "none")]
-    return lines
+def estimate(fit, name, digits):
+    """A least-squares coefficient with its 95% t interval (df = tests - coefficients); alone where
+    the fit cannot give one."""
+    k = COEFFICIENT[name]
+    value = fit["coefficients"][k]
+    low, high, _ = interval(value, fit["se"][k], fit["df"])
+    if low != low:
+        return "%.*f" % (digits, value)
+    return "%.*f (%.*f .. %.*f)" % (digits, value, digits, low, digits, high)
 
 
-def markdown(tests, fitted, window, max_dilatancy=None):
-    lines = ["### Critical states (mean over the last %g of axial strain)" % window, "",
-             "| variant | sample | p'_0 (MPa) | path | seed | e_0 | I_G,0 | peak q/p (at eps_a) | phi_peak | "
+def coefficient_resolved(fit, name):
+    k = COEFFICIENT[name]
+    return resolved(fit["coefficients"][k], fit["se"][k], fit["df"])
+
+
+def tally(changes, adjusted):
+    """The line under a table of changes: how many, resolved, and surviving Holm over them."""
+    known = [(c, p) for c, p in zip(changes, adjusted) if c["p"] == c["p"]]
+    return ("(%d comparisons: %d resolved, %d after Holm's correction over them; '*' resolved, '**' also after Holm; "
+            "'u': unpaired, Welch)" % (len(known), sum(c["resolved"] == "yes" for c, _ in known),
+                                       sum(c["resolved"] == "yes" and p < 0.05 for c, p in known)))
+
+
+def states_table(tests):
+    """Each test's critical state and the other measures: a row a test."""
+    lines = ["| variant | sample | p'_0 (MPa) | path | seed | e_0 | I_G,0 | peak q/p (at eps_a) | phi_peak | "
              "p'_cs (MPa) | e_cs | q/p cs | phi_cs | I_G,cs | dilatancy at end | overlaps / solid | "
              "e at end, overlaps removed | events in shearing | particles | steps | CPU s |",
              "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
@@ -424,15 +468,116 @@ def markdown(tests, fitted, window, max_dilatancy=None):
                         t["events_shearing"], t["particles_end"],
                         t["steps"], "%.0f" % t["cpu_seconds"] if t["cpu_seconds"] == t["cpu_seconds"]
                         else "%.0f wall" % t["seconds"]))
+    return lines
+
+
+def line_count(f, name):
+    """The tests of a group's line: a sample's, or all of them ("both", "both, overlaps removed")."""
+    return len([t for t in f["tests"] if name.startswith("both") or t["sample"] == name])
+
+
+def lines_table(fitted):
+    """The study page's lines: the straight line's coefficients with their 95% t intervals, and the
+    rms residuals of the two curved lines through the same critical states; each variant's (a pooled
+    group's single line is the planes table's comparison), a sample's only where it is not all of its
+    variant (then it is "both")."""
+    lines = ["| group | samples | tests | Gamma (95% interval) | lambda (95% interval) | R^2 | rms residual | "
+             "Li & Wang: e_Gamma | lambda_c | rms residual | log e - log p': rms residual |",
+             "|---|---|---|---|---|---|---|---|---|---|---|"]
+    for variant, f in fitted.items():
+        for name, line in f["lines"].items():
+            if " + " in variant or (name in ("dense", "loose") and line_count(f, name) == len(f["tests"])):
+                continue
+            lines.append("| %s | %s | %d | %s | %s | %.3f | %.4f | %.4f | %.4f | %.4f | %.4f |"
+                         % (variant, name, line_count(f, name), estimate(line, "Gamma", 3), estimate(line, "lambda", 4),
+                            line["R2"], line["rms"], line["e_gamma"], line["lambda_c"], line["rms_li_wang"],
+                            line["rms_power"]))
+    return lines
+
+
+def planes_table(fitted):
+    """The study page's planes: each group's straight and curved plane with beta's 95% t interval and
+    whether it is resolved; for rotation0 + normal also the reading's indicator in place of I_G and
+    beside it."""
+    lines = ["| group | tests | form | Gamma_0 or e_Gamma0 | lambda or lambda_c | beta (95% interval) | beta resolved | "
+             "rms residual | rms of the single line | I_G range |", "|---|---|---|---|---|---|---|---|---|---|"]
+    for variant, f in fitted.items():
+        if "plane" not in f:
+            continue
+        single = f["lines"].get("both", {"rms": float("nan")})["rms"]
+        ig = [t["IG_cs"] for t in f["tests"]]
+        forms = [("straight", f["plane"], "Gamma0", "lambda", "beta", "%.3f - %.3f" % (min(ig), max(ig))),
+                 ("curved", f["curved_plane"], "e_gamma0", "lambda_c", "beta", "")]
+        if "reading_plane" in f:
+            forms += [("curved, the reading (0/1) in place of I_G", f["reading_plane"], "e_gamma0", "lambda_c", "beta", ""),
+                      ("curved, I_G and the reading (its coefficient %s)" % estimate(f["reading_and_grading"], "delta", 3),
+                       f["reading_and_grading"], "e_gamma0", "lambda_c", "beta", "")]
+        for form, fit, gamma, lam, beta, span in forms:
+            lines.append("| %s | %d | %s | %s | %s | %s | %s | %.4f | %.4f | %s |"
+                         % (variant, len(f["tests"]), form, estimate(fit, gamma, 3),
+                            estimate(fit, lam, 4 if lam == "lambda" else 5), estimate(fit, beta, 2),
+                            coefficient_resolved(fit, beta), fit["rms"], single, span))
+    return lines
+
+
+def gradings_table(tests, max_dilatancy=None, page=True):
+    """The pre-crushed samples against their variant at one p', by the one rule; on the page each
+    change with its 95% interval and Holm over the table, in fit.md also beta's mean +- s.e."""
+    rows = paired_gradings(tests, max_dilatancy)
+    if not rows:
+        return []
+    found = [c for row in rows for c in row[6:10] if c is not None]
+    family = holm([c["p"] for c in found])
+    adjusted = iter(family)
+    lines = ["| variant | pre-crushed | sample | p'_0 (MPa) | path | seeds | de_cs | dI_G,cs | d ln p'_cs | "
+             "beta of each seed | beta = -de_cs / dI_G,cs |" + ("" if page else " beta, mean +- s.e. |"),
+             "|---|---|---|---|---|---|---|---|---|---|---|" + ("" if page else "---|")]
+    for base, pre, sample, p0, path, seeds, de, dig, dlnp, beta, each in rows:
+        cells = [change_cell(c, 4 if c is not dlnp else 3, next(adjusted)) for c in (de, dig, dlnp)]
+        cells += [", ".join("%.2f" % x for x in each),
+                  change_cell(beta, 2, next(adjusted)) if beta else "(no change of I_G)"]
+        if not page:
+            cells.append("%.3f +- %.3f" % (beta["change"], beta["se"]) if beta else "")
+        lines.append("| %s | %s | %s | %g | %s | %d | %s |" % (base, pre, sample, p0, path, len(seeds), " | ".join(cells)))
+    return lines + ["", tally(found, family)]
+
+
+def angles_table(tests, max_dilatancy=None):
+    """phi_cs between neighbouring cell pressures by the one rule, with Holm over the table."""
+    rows = paired_angles(tests, max_dilatancy)
+    if not rows:
+        return []
+    adjusted = holm([row[6]["p"] for row in rows])
+    lines = ["| variant | sample | path | p'_0 from (MPa) | to | seeds | change of phi_cs (deg) | p | design |",
+             "|---|---|---|---|---|---|---|---|---|"]
+    for (variant, sample, path, lo, hi, seeds, c), p_holm in zip(rows, adjusted):
+        lines.append("| %s | %s | %s | %g | %g | %d | %s | %s | %s |"
+                     % (variant, sample, path, lo, hi, len(seeds), change_cell(c, 2, p_holm),
+                        "%.2g" % c["p"] if c["p"] == c["p"] else "", c["design"]))
+    return lines + ["", tally([row[6] for row in rows], adjusted)]
+
+
+def left_out(tests, max_dilatancy):
+    out = [t for t in tests if not at_critical_state(t, max_dilatancy)]
+    return ("Left out of every fit and pairing (|dilatancy| at the end above %g): %s"
+            % (max_dilatancy, ", ".join("%s %s %g MPa seed %s (%.3f)" % (t["variant"], t["sample"], t["p0_MPa"],
+                                                                         t["seed"], t["dilatancy_end"]) for t in out)
+               if out else "none"))
+
+
+def markdown(tests, fitted, window, max_dilatancy=None):
+    """fit.md: every table of the fit, each coefficient with its standard error (the study page's
+    tables, post/study_tables/critical_state.py, give the 95% t intervals)."""
+    lines = ["### Critical states (mean over the last %g of axial strain)" % window, ""] + states_table(tests)
     lines += ["", "(dilatancy: -d eps_v / d eps_a over the window, eps_v compression positive: > 0 dilating, < 0 "
               "contracting, 0 at a critical state)", "", "### Critical state lines e_cs = Gamma - lambda ln(p'/1 kPa)", "",
               "| variant | samples | tests | Gamma | lambda | R^2 | rms residual | s.e. Gamma | s.e. lambda |",
               "|---|---|---|---|---|---|---|---|---|"]
     for variant, f in fitted.items():
         for name, line in f["lines"].items():
-            count = len([t for t in f["tests"] if name.startswith("both") or t["sample"] == name])
             lines.append("| %s | %s | %d | %.4f | %.4f | %.3f | %.4f | %.4f | %.4f |"
-                         % (variant, name, count, line["Gamma"], line["lambda"], line["R2"], line["rms"], *line["se"]))
+                         % (variant, name, line_count(f, name), line["Gamma"], line["lambda"], line["R2"], line["rms"],
+                            *line["se"]))
     lines += ["", "### Curved critical state lines: log e_cs = log e_1 - b log(p'/1 kPa) and "
               "e_cs = e_Gamma - lambda_c (p'/p_a)^0.7", "",
               "| variant | samples | e_1 | b | rms residual | e_Gamma | lambda_c | rms residual | rms of the straight line |",
@@ -454,14 +599,17 @@ def markdown(tests, fitted, window, max_dilatancy=None):
             lines.append("| %s | %d | %.4f | %.4f | %.4f | %.3f | %.4f | %.4f | %.4f | %.4f | %.4f | %.3f - %.3f |"
                          % (variant, len(f["tests"]), pl["Gamma0"], pl["lambda"], pl["beta"], pl["R2"], pl["rms"],
                             single, *pl["se"], min(ig), max(ig)))
-    lines += ["", "### Curved critical state plane e_cs = e_Gamma0 - lambda_c (p'/p_a)^0.7 - beta I_G", "",
-              "| variant | tests | e_Gamma0 | lambda_c | beta | rms residual | s.e. e_Gamma0 | s.e. lambda_c | s.e. beta |",
-              "|---|---|---|---|---|---|---|---|---|"]
+    lines += ["", "### Curved critical state plane e_cs = e_Gamma0 - lambda_c (p'/p_a)^0.7 - beta I_G [- delta reading]",
+              "", "| variant | form | tests | e_Gamma0 | lambda_c | beta | rms residual | s.e. e_Gamma0 | s.e. lambda_c | "
+              "s.e. beta | delta (s.e.) |", "|---|---|---|---|---|---|---|---|---|---|---|"]
     for variant, f in fitted.items():
-        if "curved_plane" in f:
-            cp = f["curved_plane"]
-            lines.append("| %s | %d | %.4f | %.5f | %.4f | %.4f | %.4f | %.5f | %.4f |"
-                         % (variant, len(f["tests"]), cp["e_gamma0"], cp["lambda_c"], cp["beta"], cp["rms"], *cp["se"]))
+        for key, form in (("curved_plane", "I_G"), ("reading_plane", "reading in place of I_G"),
+                          ("reading_and_grading", "I_G and reading")):
+            if key in f:
+                cp = f[key]
+                lines.append("| %s | %s | %d | %.4f | %.5f | %.4f | %.4f | %.4f | %.5f | %.4f | %s |"
+                             % (variant, form, len(f["tests"]), cp["e_gamma0"], cp["lambda_c"], cp["beta"], cp["rms"],
+                                *cp["se"][:3], "%.4f (%.4f)" % (cp["delta"], cp["se"][3]) if "delta" in cp else ""))
     lines += ["", "### Residuals of the plane", "",
               "| group | variant | sample | p'_0 (MPa) | I_G,cs | e_cs | plane | residual | curved plane | residual |",
               "|---|---|---|---|---|---|---|---|---|---|"]
@@ -471,7 +619,14 @@ def markdown(tests, fitted, window, max_dilatancy=None):
                 lines.append("| %s | %s | %s | %g | %.4f | %.4f | %.4f | %+.4f | %.4f | %+.4f |"
                              % (variant, t["variant"], t["sample"], t["p0_MPa"], t["IG_cs"], t["e_cs"], t["e_cs"] - r, r,
                                 t["e_cs"] - rc, rc))
-    lines += paired_markdown(tests, max_dilatancy)
+    gradings = gradings_table(tests, max_dilatancy, page=False)
+    if gradings:
+        lines += ["", "### Gradings at one p', by seed: beta = -de_cs / dI_G,cs", ""] + gradings
+    angles = angles_table(tests, max_dilatancy)
+    if angles:
+        lines += ["", "### phi_cs between cell pressures, by seed", ""] + angles
+    if max_dilatancy is not None:
+        lines += ["", left_out(tests, max_dilatancy)]
     return "\n".join(lines) + "\n"
 
 
@@ -575,26 +730,29 @@ def figures(tests, fitted, out):
 
 def main(argv):
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("folders", nargs="+")
+    parser.add_argument("folders", nargs="+", help="run folders (with --from-csv: critical_states.csv files)")
     parser.add_argument("--out", default=".", help="folder for critical_states.csv, fit.md and figures/")
+    parser.add_argument("--from-csv", action="store_true", help="read the tests from critical_states.csv files "
+                        "instead of runs: fit.md alone (the window is the one the CSVs were written with)")
     parser.add_argument("--window", type=float, default=0.05, help="axial strain at the end over which the "
                         "critical state is averaged (0.05)")
     parser.add_argument("--max-dilatancy", type=float, default=None, help="leave the tests whose |dilatancy| at "
                         "the end exceeds this out of the fits and pairings (default: none left out)")
     parser.add_argument("--no-figures", action="store_true")
     a = parser.parse_args(argv)
-    tests = collect(a.folders, a.window)
+    tests = read_csv(a.folders) if a.from_csv else collect(a.folders, a.window)
     if not tests:
         sys.exit("post/critical_state.py: no in.triaxial histories in folders named <sample>_<p0>MPa under %s"
                  % " ".join(a.folders))
     os.makedirs(a.out, exist_ok=True)
-    write_csv(tests, os.path.join(a.out, "critical_states.csv"))
+    if not a.from_csv:
+        write_csv(tests, os.path.join(a.out, "critical_states.csv"))
     fitted = fits(tests, a.max_dilatancy)
     text = markdown(tests, fitted, a.window, a.max_dilatancy)
     with open(os.path.join(a.out, "fit.md"), "w") as f:
         f.write(text)
     print(text)
-    if not a.no_figures:
+    if not (a.no_figures or a.from_csv):
         for path in figures(tests, fitted, os.path.join(a.out, "figures")):
             print("wrote", path)
 

@@ -1,11 +1,12 @@
-"""What accuracy costs in time (studies/accuracy/README.md): each setting's errors against the N = 1
-reference and its cost against N2 in the same round, and its measures against N2 by the one rule
-(bench/accuracy_seeds.sh writes accuracy_seeds_runs.csv)."""
+"""What accuracy costs in time (studies/accuracy/README.md): the opening table of conclusions (each knob's
+price against N2 in the same round and its error against the N = 1 reference, with Holm's correction over
+the table), each setting's errors against the reference and its cost, and its measures against N2, all by
+the one rule (bench/accuracy_seeds.sh writes accuracy_seeds_runs.csv)."""
 import os
 import statistics as py_statistics
 
 from post.seeds import compare, holm, interval, statistics, welch
-from post.study_tables.common import by_setting, cell, change_cell, read_rows, seed_values
+from post.study_tables.common import by_setting, cell, change_cell, conclusions, read_rows, seed_values
 
 PAGE = "studies/accuracy/README.md"
 
@@ -68,4 +69,93 @@ def accuracy_changes(folder):
         "Welch)" % len(found)
 
 
-TABLES = {"accuracy_errors": accuracy_errors, "accuracy_changes": accuracy_changes}
+# The opening table: each knob the CSV varies, its price (the cost against N2 in the same round) and
+# its error against the N = 1 reference, by the one rule, with Holm's correction over the table.
+KNOBS = [("N", "N", ""), ("L_R", "L_R", ""), ("dmin_mm", "dmin", " mm"), ("layout", "layout", ""),
+         ("dt_fraction", "dt fraction", ""), ("fragment_density", "fragment density", ""),
+         ("crush_every", "crush_every", ""), ("dt_every", "dt_every", "")]
+ERROR_NAMES = {"err_porosity": "n", "err_K0": "K0", "err_gsd_percent": "GSD", "err_I_G": "I_G",
+               "err_events_relative": "events", "err_yield_relative": "yield"}
+COMMAND = "bash bench/accuracy_seeds.sh"
+
+
+def knob_of(seeds, base):
+    """(order, label, value, base value, unit) of the knob in which a setting differs from the base."""
+    row, ref = next(iter(seeds.values())), next(iter(base.values()))
+    for order, (column, label, unit) in enumerate(KNOBS):
+        if row[column] != ref[column]:
+            return order, label, row[column], ref[column], unit
+    return len(KNOBS), "?", "", "", ""
+
+
+def cost_test(seeds, base):
+    """The runtime over the base's in the same round: (median, mean, low, high, p against 1, rounds)."""
+    ratios = [float(r["seconds"]) / float(base[k]["seconds"]) for k, r in seeds.items() if k in base]
+    n, mean, _, se = statistics(ratios)
+    low, high, p = interval(mean - 1.0, se, n - 1) if n > 1 else (float("nan"),) * 3
+    return py_statistics.median(ratios), mean, 1.0 + low, 1.0 + high, p, n
+
+
+def error_test(name, seeds, reference, base, column, scale):
+    """A setting's error against the reference, by compare(): at N = 2 paired against N2's error (what
+    the knob adds); for the reference's own setting, N2's error against the reference's own scatter
+    (each of its seeds against the others' mean; Welch, the two share no sample)."""
+    if name != ACCURACY_REFERENCE:
+        return compare(seed_values(base, column, scale), seed_values(seeds, column, scale))
+    change, se, df = welch(seed_values(reference, column, scale).values(), seed_values(base, column, scale).values())
+    low, high, p = interval(change, se, df)
+    return dict(change=change, low=low, high=high, p=p, design="unpaired (Welch)",
+                resolved="yes" if low == low and (low > 0 or high < 0) else "no")
+
+
+def conclusions_accuracy(folder):
+    settings = by_setting(read_rows(os.path.join(folder, "accuracy_seeds_runs.csv")))
+    reference, base = settings[ACCURACY_REFERENCE], settings[ACCURACY_BASE]
+    found = []
+    for name, seeds in settings.items():
+        if name != ACCURACY_BASE:
+            errors = [(ERROR_NAMES[column], error_test(name, seeds, reference, base, column, scale), digits)
+                      for column, _, scale, digits in ACCURACY_ERRORS]
+            found.append((knob_of(seeds, base), name, cost_test(seeds, base), errors, len(seeds)))
+    found.sort(key=lambda f: f[0][0])  # the knobs in KNOBS' order, each knob's settings as the CSV has them
+    adjusted = iter(holm([p for f in found for p in [f[2][4]] + [c["p"] for _, c, _ in f[3]]]))
+    rows, total, resolved, survivors = [], 0, 0, []
+    for (_, label, value, base_value, unit), name, (median, mean, low, high, p, rounds), errors, seeds in found:
+        cost_holm, total = next(adjusted), total + 1 + len(errors)
+        cheaper, dearer = high < 1, low > 1
+        resolved += cheaper or dearer
+        if (cheaper or dearer) and cost_holm < 0.05:
+            survivors.append("%s's cost" % name)
+        price = "cost: median %.2f, mean %.2f (%.2f .. %.2f)%s" % (
+            median, mean, low, high, "" if not (cheaper or dearer) else ("**" if cost_holm < 0.05 else "*"))
+        more, less, cells = [], [], []
+        for measure, c, digits in errors:
+            p_holm = next(adjusted)
+            if c["resolved"] == "yes":
+                resolved += 1
+                (more if c["change"] > 0 else less).append(measure)
+                cells.append("%s %s" % (measure, change_cell(c, digits, p_holm)))
+                if p_holm < 0.05:
+                    survivors.append("%s's error in %s" % (name, measure))
+        cost_words = "costs more" if dearer else "costs less" if cheaper else "cost not resolved"
+        if name == ACCURACY_REFERENCE:
+            finding = "%s = %s instead of %s = %s: %s; one N = %s run's error exceeds N = %s's own scatter in %s" % (
+                label, value, label, base_value, cost_words, base_value, value, ", ".join(more) if more else "no measure")
+        else:
+            error_words = "; ".join(w for w in ("more error than N2 in " + ", ".join(more) if more else "",
+                                                "less error than N2 in " + ", ".join(less) if less else "") if w)
+            finding = "%s %s%s instead of %s%s: %s; %s" % (label, value, unit, base_value, unit, cost_words,
+                                                         error_words or "no error resolved beyond N2's")
+        error = ("error: " + ", ".join(cells) + ", the rest not resolved") if cells \
+            else "error: none of %d resolved" % len(errors)
+        runs = "%d seeds, %d rounds" % (seeds, rounds) if name != ACCURACY_REFERENCE else \
+            "%d seeds of %s, %d rounds" % (seeds, name, rounds)
+        rows.append(("**%s**: %s" % (name, finding), price + "; " + error, runs, COMMAND))
+    return conclusions(rows) + "\n\n(%d comparisons, a cost and %d errors a row: %d resolved ('*'); %s after Holm's " \
+        "correction over the %d ('**'). 'u': unpaired, Welch.)" % (
+            total, len(ACCURACY_ERRORS), resolved, ("these survive: " + ", ".join(survivors)) if survivors else "none",
+            total)
+
+
+TABLES = {"conclusions_accuracy": conclusions_accuracy, "accuracy_errors": accuracy_errors,
+          "accuracy_changes": accuracy_changes}
