@@ -226,7 +226,8 @@ def case_fit_precrushed(liggghts, work):
 def case_fit_fixture(liggghts, work):
     """post/critical_state.py on histories built on a known plane e_cs = 1.5 - 0.06 ln(p'/kPa) -
     0.8 I_G at q/p = 1.2: it recovers the plane exactly, phi_cs = 30 degrees, each sample's line
-    through its own points, residuals that are the shifts put in, and writes the tables and figures."""
+    through its own points, residuals that are the shifts put in, and writes the tables and figures;
+    read back from the critical_states.csv it wrote (--from-csv), the same plane."""
     study = os.path.join(work, "study")
     if os.path.isdir(study):
         shutil.rmtree(study)
@@ -271,6 +272,14 @@ def case_fit_fixture(liggghts, work):
               and abs(float(line.group(2)) - (LAMBDA + 0.01 * BETA)) < 1e-4,
               "%s line: Gamma %s, lambda %s (expected %.4f, %.4f)" % (sample, line and line.group(1),
                                                                       line and line.group(2), gamma, LAMBDA + 0.01 * BETA))
+    # --from-csv: the study's tables from its CSV alone give the plane the run folders gave
+    subprocess.run(["/usr/bin/python3", FIT, "--from-csv", "--out", os.path.join(work, "fit_csv"),
+                    os.path.join(work, "fit", "critical_states.csv")], stdout=subprocess.DEVNULL, check=True)
+    again = re.search(r"^\| rotation0 \| 8 \| (\S+) \| (\S+) \| (\S+) \|",
+                      open(os.path.join(work, "fit_csv", "fit.md")).read(), re.M)
+    check(again is not None and abs(float(again.group(1)) - GAMMA0) < 1e-3 and abs(float(again.group(2)) - LAMBDA) < 1e-4
+          and abs(float(again.group(3)) - BETA) < 1e-3,
+          "--from-csv recovers the plane from critical_states.csv alone: %s" % (again and again.groups(),))
     # a residual put in comes out as the plane's residual
     write_fixture(os.path.join(study, "rotation0", "dense_5MPa"), 5.0, 0.80, e_shift=0.01)
     subprocess.run(["/usr/bin/python3", FIT, "--out", os.path.join(work, "fit2"), "--no-figures", study],
