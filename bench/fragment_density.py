@@ -6,8 +6,8 @@ the oedometric test O-2 and the penetration test dense_region, each over three s
   python3 bench/fragment_density.py O2_TRUE_DIR O2_SCALED_DIR PENETRATION_STUDY_CSV
 
 O2_*_DIR: outputs of scripts/fontainebleau_runs.sh (one folder per seed: O2, O2_s<seed>);
-PENETRATION_STUDY_CSV: scripts/penetration_study.sh's study.csv with the cases dense_region[_s2|_s3]
-and dense_region_scaled[_s2|_s3]. Prints, per test: each seed's results with both densities, the
+PENETRATION_STUDY_CSV: scripts/penetration_study.sh's study.csv with the cases dense_region,
+dense_region_N60_s2, dense_region_N60_s3 and dense_region_scaled[_s2|_s3]. Prints, per test: each seed's results with both densities, the
 effect of the knob (scaled - true, same seed) against the seeds' scatter (the sample standard
 deviation over the seeds, true density), the cost (steps, seconds), and the inertial numbers
 I = rate d sqrt(rho / p) of the grains and of the fragments.
@@ -109,8 +109,8 @@ def report_o2(true_dir, scaled_dir):
 def report_penetration(study):
     with open(study) as f:
         cases = {r["case"]: r for r in csv.DictReader(f)}
-    pairs = [(t, t.replace("dense_region", "dense_region_scaled")) for t in ("dense_region", "dense_region_s2",
-                                                                           "dense_region_s3")]
+    pairs = [("dense_region", "dense_region_scaled"), ("dense_region_N60_s2", "dense_region_scaled_s2"),
+             ("dense_region_N60_s3", "dense_region_scaled_s3")]
     pairs = [(t, s) for t, s in pairs if t in cases and s in cases]
     print("Penetration dense_region (N = 60, crushing in the zone), true density against scaled, %d seeds"
           % len(pairs))

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""The compression tests' seeds gathered (studies/fontainebleau/README.md, "Upscaling with seeds" and "The strength
+"""The compression tests' seeds gathered (studies/fontainebleau/README.md, "Upscaling" and "The strength
 reading side by side"): oedometric and isotropic runs, several seeds each, grouped into settings
 and compared with a reference setting measure by measure.
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The paper's upscaling claim with seeds (studies/fontainebleau/README.md, "Upscaling with seeds"): the oedometric and
+# The paper's upscaling claim with seeds (studies/fontainebleau/README.md, "Upscaling"): the oedometric and
 # isotropic tests at N = 1, 1.5 and 2, each with the seeds of SEEDS, run by scripts/fontainebleau_runs.sh
 # one round a seed, then compared with N = 1 by post/compression_seeds.py.
 #   bash scripts/upscaling_seeds.sh [OUT_DIR (default runs/upscaling)] [tests (default O1 O1.5 O2 I1 I1.5 I2)]

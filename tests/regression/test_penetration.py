@@ -39,6 +39,7 @@ DC = 0.0357
 STATS = os.path.join(ROOT, "post", "penetration_stats.py")
 STUDY = os.path.join(ROOT, "scripts", "penetration_study.sh")
 STUDY_CSV = os.path.join(ROOT, "studies", "penetration", "penetration_study.csv")
+CASES_CSV = os.path.join(ROOT, "studies", "penetration", "cases.csv")  # the study's cases, read by STUDY
 SEEDS = ("15485863", "179424673", "373587883")
 DEFAULTS_NAMED = {"tip_shape": "cone", "sigma_lim0": "5e9", "neighbor_style": "multi"}  # in.cone's
 
@@ -165,7 +166,7 @@ def case_pile_short(liggghts, work, ranks):
     # the base carries q_b, some 20 times the chamber's 100 kPa: the rings just below it (r < R,
     # -R < h < 0) hold a vertical stress far above the chamber's (a wrong sign, frame or volume would
     # not); beside the shaft, a grain or two per ring here, the stresses are the relaxed ones of
-    # studies/penetration/README.md and are not checked
+    # studies/penetration/history.md and are not checked
     below = [r["sigma_zz"] for r in rings if r["r_over_R"] < 1 and -1 < r["h_over_R"] < 0]
     check(len(shaft) >= 3 and len(below) >= 2 and sum(below) / len(below) > 5 * 1e5
           and os.path.exists(os.path.join(folder, "pile_maps.png")),
@@ -706,6 +707,84 @@ def study_header():
     return ",".join(columns).split(",")
 
 
+def dry_run(work, names, cases=None):
+    """scripts/penetration_study.sh --dry-run on names (cases: another table than cases.csv): (exit status,
+    {case: (ranks, in.cone's -var pairs)}, {case: in.chamber's -var pairs}, stderr, the cases run twice)."""
+    env = dict(os.environ, PENETRATION_CASES=cases or CASES_CSV)
+    proc = subprocess.run(["bash", STUDY, "--dry-run", os.path.join(work, "dry")] + list(names), env=env,
+                          stdout=subprocess.PIPE, stderr=subprocess.PIPE, universal_newlines=True)
+    pairs = lambda text: [tuple(w.split(" ", 1)) for w in text.split(" -var ")[1:]]  # noqa: E731
+    tests, chambers, twice = {}, {}, []
+    for line in proc.stdout.splitlines():
+        m = re.match(r"== (\S+): mpirun -np (\d+) liggghts -in in\.cone( .*)$", line)
+        if m:
+            twice += [m.group(1)] if m.group(1) in tests else []
+            tests[m.group(1)] = (m.group(2), pairs(m.group(3)))
+        m = re.match(r"== (\S+): chamber \S+: mpirun -np 2 liggghts -in in\.chamber( .*)$", line)
+        if m:
+            chambers[m.group(1)] = pairs(m.group(2))
+    return proc.returncode, tests, chambers, proc.stderr, twice
+
+
+def case_study_cases(liggghts, work):
+    """studies/penetration/cases.csv and scripts/penetration_study.sh agree: the runner's dry run of every
+    case of the table runs it once, on its row's ranks, with its row's settings as in.cone's variables
+    (density, N, crushing, v, width, distribution, sigma_v, seed, the case's label, fragment_density,
+    depth, then test_vars and chamber_vars) and in.chamber's (density, N, width, depth, sigma_v, seed,
+    fragment_density, then chamber_vars); each group runs the cases whose groups column names it. A
+    table with a bad value in any row (a crushing mode the decks lack, a velocity that is no number,
+    a variable without its value, a case named twice) stops the runner before anything runs, with a
+    message that names the row's case, the column and the value; so does an unknown name."""
+    del liggghts
+    with open(CASES_CSV) as f:
+        rows = list(csv.DictReader(f))
+    names = [r["case"] for r in rows]
+    rc, tests, chambers, err, twice = dry_run(work, names)
+    check(rc == 0 and sorted(tests) == sorted(names) and sorted(chambers) == sorted(names) and not twice,
+          "the dry run of the table's %d cases runs each once (%d tests, %d chambers, twice: %s)%s"
+          % (len(names), len(tests), len(chambers), twice, "" if rc == 0 else ": " + err.strip()[-300:]))
+    wrong = []
+    for r in rows:
+        listed = lambda column: [tuple(kv.split("=", 1)) for kv in r[column].split(";") if kv]  # noqa: E731
+        cone = [(c, r[c]) for c in ("density", "N", "crushing", "v", "width", "distribution", "sigma_v", "seed")]
+        cone += [("label", r["case"]), ("fragment_density", r["fragment_density"]), ("depth", r["depth"])]
+        cone += listed("test_vars") + listed("chamber_vars")
+        chamber = [(c, r[c]) for c in ("density", "N", "width", "depth", "sigma_v", "seed", "fragment_density")]
+        chamber += listed("chamber_vars")
+        if tests[r["case"]] != (r["ranks"], cone) or chambers[r["case"]] != chamber:
+            wrong.append(r["case"])
+    check(not wrong, "every case runs with its row's settings (not: %s)" % ", ".join(wrong[:5]))
+    groups, wrong = sorted({g for r in rows for g in r["groups"].split()}), []
+    for group in groups:
+        rc, tests, _, _, twice = dry_run(work, [group])
+        if rc != 0 or twice or sorted(tests) != sorted(r["case"] for r in rows if group in r["groups"].split()):
+            wrong.append(group)
+    check(not wrong, "each of the %d groups runs the cases that name it, each once (not: %s)" % (len(groups), ", ".join(wrong)))
+    def table(name, changed):
+        """A copy of the table, its rows as changed gives them."""
+        path = os.path.join(work, name)
+        with open(path, "w") as f:
+            writer = csv.DictWriter(f, list(rows[0]), lineterminator="\n")
+            writer.writeheader()
+            writer.writerows(changed)
+        return path
+    at = names.index("refined_N34_pristine_w40_s2")
+    for column, value, words in (("crushing", "sometimes", "crushing 'sometimes' is not one of region, 0, 1"),
+                                 ("v", "fast", "v 'fast' is not a positive number"),
+                                 ("chamber_vars", "refine", "chamber_vars 'refine' is not a list name=value")):
+        bad = table("bad_%s.csv" % column, rows[:at] + [dict(rows[at], **{column: value})] + rows[at + 1:])
+        rc, tests, _, err, _ = dry_run(work, ["dense_region"], bad)
+        check(rc == 2 and not tests and "line %d, case refined_N34_pristine_w40_s2: %s" % (at + 2, words) in err,
+              "a bad %s in another row stops the runner, naming the row, the column and the value: %s"
+              % (column, err.strip().splitlines()[-1:]))
+    rc, tests, _, err, _ = dry_run(work, ["dense_region"], table("twice.csv", rows + [rows[at]]))
+    check(rc == 2 and not tests and "a second row of case refined_N34_pristine_w40_s2" in err,
+          "a case named twice in the table is refused: %s" % err.strip().splitlines()[-1:])
+    rc, tests, _, err, _ = dry_run(work, ["pristine_widest"])
+    check(rc == 2 and not tests and "unknown case or group pristine_widest" in err,
+          "an unknown name is refused: %s" % err.strip().splitlines()[-1:])
+
+
 def write_study(path, rows, drop=()):
     """A stand-in study.csv: each row (case, seed, q_c, settings) on the doc's dense cone at 0.5 m/s, the
     columns in drop left out (an older study.csv)."""
@@ -777,7 +856,7 @@ def case_stats_study_csv(liggghts, work):
     puts no pile with a cone nor the weak sand with Table 1's (told from the case names: pile_*,
     weak_*), warns of no two rows of one setting and seed that differ; the weak pile with crushing
     everywhere (the "dense, crushing 1, 100 kPa, 2.11 MPa, 61 events" setting the older grouping
-    called a cone) is a setting of its own; and q_c falls with v by studies/penetration/README.md's 0.19 +- 0.05
+    called a cone) is a setting of its own; and q_c falls with v by studies/penetration/history.md's 0.19 +- 0.05
     MPa per halving (the 30 rate runs, one intercept per seed)."""
     del liggghts, work
     header = open(STUDY_CSV).readline().strip().split(",")
