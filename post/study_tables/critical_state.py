@@ -6,11 +6,15 @@ one rule, the cost, and the opening conclusions."""
 import os
 
 from post import critical_state as cs
-from post.seeds import holm, interval
-from post.study_tables.common import conclusions
+from post.seeds import holm, interval, one_sample
+from post.study_tables.common import cell, conclusions
 
 PAGE = "studies/critical_state/README.md"
 CSVS = ("critical_states.csv", "critical_states_precrushed.csv")
+# The group "lab" (the decks' reading, loose, cell 0.2 MPa, five seeds, to 40% axial strain), apart
+# from the fits: its longer shearing would mix two windows of strain into one line.
+LAB_CSV = "critical_states_lab.csv"
+SETTLED = 0.05  # |dilatancy| at the end below which a test is at its critical state
 STUDY = "bash scripts/critical_state_study.sh"
 DECKS = "rotation0"  # the decks' reading: normal_clipped_originals, grains that do not rotate
 MAX_DILATANCY = 0.1  # the page's second reading of the fits: tests still changing volume left out
@@ -36,10 +40,6 @@ def tests_of(folder, names=CSVS):
 def fitted_of(folder, max_dilatancy=None):
     tests = tests_of(folder)
     return tests, cs.fits(tests, max_dilatancy)
-
-
-def critical_states(folder):
-    return "\n".join(cs.states_table(tests_of(folder)))
 
 
 def critical_state_lines(folder):
@@ -97,6 +97,52 @@ def span(c, digits, signed=False):
     return (f + " (" + f + " .. " + f + ")") % (digits, c["change"], digits, c["low"], digits, c["high"])
 
 
+def lab_tests(folder):
+    path = os.path.join(folder, LAB_CSV)
+    return cs.read_csv([path]) if os.path.exists(path) else []
+
+
+def lab_gap(lab):
+    """phi_cs over the seeds less the top of NE34's range, as a change with its 95% t interval."""
+    mean, se, df = one_sample([t["phi_cs"] - NE34_PHI_CS[1] for t in lab])
+    low, high, p = interval(mean, se, df)
+    return dict(change=mean, se=se, df=df, low=low, high=high, p=p,
+                resolved="yes" if low > 0 or high < 0 else "no")
+
+
+def settled(t):
+    return abs(t["dilatancy_end"]) <= SETTLED
+
+
+def lab_conclusion(lab):
+    gap = lab_gap(lab)
+    at_cs = sum(settled(t) for t in lab)
+    place = "above" if gap["low"] > 0 else ("below" if gap["high"] < 0 else "not resolved from")
+    return ("Sheared where the laboratory measured it (cell 0.2 MPa, loose, to 40%% strain), the decks' phi_cs "
+            "lies %s the top of NE34's %.1f - %.1f deg." % ((place,) + NE34_PHI_CS),
+            "phi_cs %s deg at p' %s MPa; above %.1f by %s; %d of %d tests within |dilatancy| %.2f at the end"
+            % (cell([t["phi_cs"] for t in lab], 1), cell([t["p_cs_MPa"] for t in lab], 2), NE34_PHI_CS[1],
+               span(gap, 1, True), at_cs, len(lab), SETTLED),
+            runs(lab), "AXIAL_MAX=0.4 %s runs/critical_state_lab lab" % STUDY)
+
+
+def critical_state_lab(folder):
+    """Each test of the group lab: its critical state, and whether it has settled there."""
+    lab = lab_tests(folder)
+    lines = ["| seed | e_0 | p'_cs (MPa) | e_cs | q/p cs | phi_cs (deg) | dilatancy at end | at its critical state | "
+             "I_G,cs | events in shearing |", "|---|---|---|---|---|---|---|---|---|---|"]
+    for t in lab:
+        lines.append("| %s | %.3f | %.3f | %.3f | %.3f | %.1f | %+.3f | %s | %.3f | %d |" % (
+            t["seed"], t["e0"], t["p_cs_MPa"], t["e_cs"], t["M_cs"], t["phi_cs"], t["dilatancy_end"],
+            "yes" if settled(t) else "no", t["IG_cs"], t["events_shearing"]))
+    if not lab:
+        lines.append("| not run | | | | | | | | | |")
+    else:
+        lines.append("| mean (95%% interval) | | | | | %s | | %d of %d | | |" % (
+            cell([t["phi_cs"] for t in lab], 1), sum(settled(t) for t in lab), len(lab)))
+    return "\n".join(lines)
+
+
 def verdict(c):
     return "resolved" if c["resolved"] == "yes" else "not resolved"
 
@@ -145,6 +191,10 @@ def conclusions_critical_state(folder):
                  if control else "not run: no `none_pre50` rows in the CSVs",
                  "%d tests" % sum(2 * len(r[5]) for r in control), "%s runs/precrushed %s" % (STUDY, CONTROL)))
 
+    lab = lab_tests(folder)
+    if len(lab) >= 3:
+        rows.append(lab_conclusion(lab))
+        tested.append(lab_gap(lab))
     low = [t for t in tests if t["variant"] == DECKS and t["path"] == "sigma3" and t["p_cs_MPa"] <= NE34_P_MPA[1]]
     place = "above" if all(t["phi_cs"] > NE34_PHI_CS[1] for t in low) else "not all above"
     rows.append(("At the published tests' pressures (%g - %g kPa) the decks' phi_cs lies %s NE34's %.1f - %.1f "
@@ -180,8 +230,9 @@ def conclusions_critical_state(folder):
         sum(c["resolved"] == "yes" and p < 0.05 for c, p in zip(tested, adjusted)))
 
 
-TABLES = {"conclusions_critical_state": conclusions_critical_state, "critical_states": critical_states,
+TABLES = {"conclusions_critical_state": conclusions_critical_state,
           "critical_state_lines": critical_state_lines,
           "critical_state_planes": critical_state_planes, "critical_state_settled": critical_state_settled,
           "critical_state_gradings": critical_state_gradings,
-          "critical_state_angles": critical_state_angles, "critical_state_cost": critical_state_cost}
+          "critical_state_angles": critical_state_angles, "critical_state_cost": critical_state_cost,
+          "critical_state_lab": critical_state_lab}
