@@ -339,33 +339,44 @@ def io_variants(folder):
 
 def io_mechanisms(folder):
     """Each candidate mechanism of the paper's isotropic-over-oedometric breakage at N = 2: the events
-    per initial grain of O-2 and I-2, their paired difference at the tests' ends and after the first
-    load, and the oedometer's K0 and p' at sigma_v = 100 MPa."""
+    per initial grain of O-2 and I-2, their paired difference at the tests' ends (with Holm's
+    correction over the variants) and after the first load, and the oedometer's K0 and p' at
+    sigma_v = 100 MPa."""
     rows = read_rows(os.path.join(folder, "io_mechanisms_runs.csv"))
     paper = (PAPER[("I", "2")][2] - PAPER[("O", "2")][2]) / float(PAPER[("O", "2")][0])
-    lines = ["| variant | what it tests | seeds | O-2 events / N_i | I-2 events / N_i | I - O at the ends (95%) | p "
-             "| resolved | I - O after the first load (95%) | O-2 K0 at the end | O-2 p' at the end (MPa) |",
-             "|---|---|---|---|---|---|---|---|---|---|---|"]
     per_grain = lambda r, column: float(r[column]) / float(r["initial_particles"])  # noqa: E731
+    found = []
     for variant, (_, tests) in io_variants(folder).items():
         runs = {"O": {}, "I": {}}
         for r in rows:
             if r["variant"] == variant and r["N"] == "2":
                 runs[r["test"]].setdefault(r["seed"], r)
         if not runs["O"] or not runs["I"]:
-            lines.append("| %s | %s | 0 | not run | | | | | | | |" % (variant, tests))
+            found.append((variant, tests, None, None, None))
             continue
         end = compare(dict((s, per_grain(r, "events")) for s, r in runs["O"].items()),
                       dict((s, per_grain(r, "events")) for s, r in runs["I"].items()))
         after = compare(dict((s, per_grain(r, "events") - per_grain(r, "events_first_load")) for s, r in runs["O"].items()),
                         dict((s, per_grain(r, "events") - per_grain(r, "events_first_load")) for s, r in runs["I"].items()))
-        lines.append("| %s | %s | %d | %s | %s | %s | %s | %s | %s | %s | %s |" % (
+        found.append((variant, tests, runs, end, after))
+    tested = [f for f in found if f[3] is not None]
+    adjusted = dict(zip((f[0] for f in tested), holm([f[3]["p"] for f in tested])))
+    lines = ["| variant | what it tests | seeds | O-2 events / N_i | I-2 events / N_i | I - O at the ends (95%%) | p "
+             "| resolved | Holm (%d) | I - O after the first load (95%%) | O-2 K0 at the end | O-2 p' at the end (MPa) |"
+             % len(tested), "|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    for variant, tests, runs, end, after in found:
+        if end is None:
+            lines.append("| %s | %s | 0 | not run | | | | | | | | |" % (variant, tests))
+            continue
+        p_holm = adjusted[variant]
+        lines.append("| %s | %s | %d | %s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
             variant, tests, end["pairs"], cell([per_grain(r, "events") for r in runs["O"].values()], 4),
             cell([per_grain(r, "events") for r in runs["I"].values()], 4), interval_cell(end, 4),
-            "%.2g" % end["p"] if end["p"] == end["p"] else "", end["resolved"], interval_cell(after, 4),
+            "%.2g" % end["p"] if end["p"] == end["p"] else "", end["resolved"],
+            ("yes" if p_holm < 0.05 else "no") if p_holm == p_holm else "", interval_cell(after, 4),
             cell([float(r["K0_end"]) for r in runs["O"].values()], 3),
             cell([float(r["p_end_MPa"]) for r in runs["O"].values()], 1)))
-    lines.append("| the paper (one run each) | | 1 | %.4f | %.4f | %+.4f | | | | | |" % (
+    lines.append("| the paper (one run each) | | 1 | %.4f | %.4f | %+.4f | | | | | | |" % (
         PAPER[("O", "2")][2] / float(PAPER[("O", "2")][0]), PAPER[("I", "2")][2] / float(PAPER[("I", "2")][0]), paper))
     return "\n".join(lines)
 
