@@ -14,9 +14,12 @@ inside which an error is not an error.
 Per setting (OUT_DIR/accuracy_seeds_settings.csv, post/seeds.py's statistics and changes):
   - each error's mean and standard error over the seeds, and whether it exceeds the reference's own
     spread by its 95% t interval (Welch);
-  - each measure's change against the base N = 2 setting (L_R 0.1, dmin 0.05 mm, ...), paired by
-    seed (the seed fixes the sample and the strengths at one N), resolved or not by its 95% t interval;
-  - each measure's change against the reference (unpaired: another N is another sample);
+  - each measure's change against the base N = 2 setting (L_R 0.1, dmin 0.05 mm, ...) and against
+    the reference, by post/seeds.py's one rule (compare()): paired by seed on three or more common
+    seeds where the two sides correlate positively, else unpaired (Welch); across N too, for the seed
+    draws the sample at each N and the correlation decides; resolved or not by its 95% t interval
+    (<measure>_vs_base_design and _vs_reference_design: paired or Welch; vs_base_paired: yes where
+    every measure paired, no where none, partly else);
   - the cost: the runtime over the base's in the same round (seed), median and range of the rounds.
 Writes also accuracy_seeds_table.md and pareto_seeds.png (each error against the cost ratio, with
 its error bars, the reference's spread shaded)."""
@@ -31,7 +34,7 @@ sys.path.insert(0, HERE)
 sys.path.insert(0, os.path.dirname(HERE))
 import accuracy_vs_cost as avc  # noqa: E402
 from post import compression_seeds  # noqa: E402
-from post.seeds import change, resolved, statistics, t_quantile, welch_df, write_csv  # noqa: E402
+from post.seeds import compare, resolved, statistics, t_quantile, welch_df, write_csv  # noqa: E402
 
 import matplotlib  # noqa: E402
 
@@ -114,14 +117,24 @@ def main(out):
         row.update(errors(r, mean_of([o for o in refs if o is not r]) if r["setting"] == REFERENCE else ref_mean))
         rows.append(row)
     write_csv(os.path.join(out, "accuracy_seeds_runs.csv"), rows)
+    csv_rows, spread = settings_of(rows)
+    write_csv(os.path.join(out, "accuracy_seeds_settings.csv"), csv_rows)
+    table = markdown(csv_rows, spread)
+    open(os.path.join(out, "accuracy_seeds_table.md"), "w").write(table)
+    print(table)
+    figure(csv_rows, spread, out)
 
+
+def settings_of(rows):
+    """Per setting, from the runs' rows (those of accuracy_seeds_runs.csv): the lines of
+    accuracy_seeds_settings.csv, and the reference's own spread of each error (statistics())."""
     settings = []
     for r in rows:
         if r["setting"] not in settings:
             settings.append(r["setting"])
     by = {s: {r["seed"]: r for r in rows if r["setting"] == s} for s in settings}
     spread = {e: statistics([r[e] for r in by[REFERENCE].values()]) for e in ERRORS}
-    table, csv_rows = [], []
+    csv_rows = []
     for s in settings:
         seeds = by[s]
         line = {"setting": s, "seeds": len(seeds)}
@@ -134,29 +147,31 @@ def main(out):
                 line[e + "_beyond_spread"] = resolved(mean - spread[e][1], math.sqrt(se ** 2 + spread[e][3] ** 2),
                                                       welch_df(se, n, spread[e][3], spread[e][0])) \
                     if mean > spread[e][1] else "no"
+        pairing = []  # whether each measure's change against the base is paired
         for m in MEASURES:
             base = {k: r[m] for k, r in by.get(BASE, {}).items() if math.isfinite(r[m])}
             other = {k: r[m] for k, r in seeds.items() if math.isfinite(r[m])}
             if s != BASE and base and other:
-                _, stats, unpaired, paired = change(base, other)
-                line[m] = stats[1]
-                # paired only at the base's N: at another N the seed draws another sample
-                same_n = line["N"] == next(iter(by[BASE].values()))["N"]
-                line["vs_base_paired"] = "yes" if paired and same_n else "no"
-                if paired and same_n:
-                    line[m + "_vs_base"], line[m + "_vs_base_se"] = paired[1], paired[2]
-                    line[m + "_vs_base_resolved"] = resolved(paired[1], paired[2], paired[3])
-                else:
-                    line[m + "_vs_base"], line[m + "_vs_base_se"] = unpaired[:2]
-                    line[m + "_vs_base_resolved"] = resolved(*unpaired)
+                # the one rule (post/seeds.py compare()): paired by seed where three or more seeds are
+                # common and correlate positively, else Welch; at another N too, where the correlation
+                # test decides (the seed draws the sample at each N)
+                c = compare(base, other)
+                line[m] = statistics(list(other.values()))[1]
+                design = "paired" if c["design"].startswith("paired") else "Welch"
+                pairing.append(design == "paired")
+                line["vs_base_paired"] = "yes" if all(pairing) else "no" if not any(pairing) else "partly"
+                line[m + "_vs_base"], line[m + "_vs_base_se"] = c["change"], c["se"]
+                line[m + "_vs_base_resolved"] = c["resolved"]
+                line[m + "_vs_base_design"] = design
             ref = {k: r[m] for k, r in by[REFERENCE].items() if math.isfinite(r[m])}
             if other:
                 stats = statistics(list(other.values()))
                 line[m], line[m + "_se"] = stats[1], stats[3]
             if s != REFERENCE and ref and other:
-                _, _, unpaired, _ = change(ref, other)
-                line[m + "_vs_reference"], line[m + "_vs_reference_se"] = unpaired[:2]
-                line[m + "_vs_reference_resolved"] = resolved(*unpaired)
+                c = compare(ref, other)  # the one rule, as against the base
+                line[m + "_vs_reference"], line[m + "_vs_reference_se"] = c["change"], c["se"]
+                line[m + "_vs_reference_resolved"] = c["resolved"]
+                line[m + "_vs_reference_design"] = "paired" if c["design"].startswith("paired") else "Welch"
         # the cost: runtime over the base's in the same round
         ratios = [r["seconds"] / by[BASE][k]["seconds"] for k, r in seeds.items() if BASE in by and k in by[BASE]]
         line["seconds"] = statistics([r["seconds"] for r in seeds.values()])[1]
@@ -167,11 +182,7 @@ def main(out):
             line["cost_vs_base_mean"], line["cost_vs_base_se"] = mean, se
             line["cost_vs_base_resolved"] = resolved(mean - 1.0, se, n - 1) if s != BASE else ""
         csv_rows.append(line)
-    write_csv(os.path.join(out, "accuracy_seeds_settings.csv"), csv_rows)
-    table = markdown(csv_rows, spread)
-    open(os.path.join(out, "accuracy_seeds_table.md"), "w").write(table)
-    print(table)
-    figure(csv_rows, spread, out)
+    return csv_rows, spread
 
 
 def markdown(lines, spread):
@@ -192,18 +203,20 @@ def markdown(lines, spread):
             mark = "*" if line.get(e + "_beyond_spread") == "yes" else ""
             cells.append(("%.*f" % (digits, mean)) + ("" if not math.isfinite(se) else " +- %.*f" % (digits, se)) + mark)
         out.append("| " + " | ".join(cells) + " |")
-    out += ["", "Changes against the base N2, paired by seed at N = 2 (unpaired at another N, whose seed draws "
-            "another sample); mean +- se, '*': resolved (95% t interval):", "",
+    out += ["", "Changes against the base N2 by the one rule (post/seeds.py): paired by seed where three or more "
+            "seeds are common and correlate positively, else Welch ('u'); mean +- se, '*': resolved (95% t interval):",
+            "",
             "| setting | n at 10 MPa | n at 100 MPa | K0 | I_G at 100 MPa | events per grain | yield (MPa) |",
             "|---|---|---|---|---|---|---|"]
     for line in lines:
         if "n_10MPa_vs_base" not in line:
             continue
-        cells = [line["setting"] + ("" if line["vs_base_paired"] == "yes" else " (unpaired)")]
+        cells = [line["setting"]]
         for m, digits in (("n_10MPa", 4), ("n_100MPa", 4), ("K0_mean", 3), ("I_G_100MPa", 4), ("events_per_grain", 4),
                           ("yield_MPa", 2)):
-            cells.append("%+.*f +- %.*f%s" % (digits, line[m + "_vs_base"], digits, line[m + "_vs_base_se"],
-                                               "*" if line[m + "_vs_base_resolved"] == "yes" else ""))
+            cells.append("%+.*f +- %.*f%s%s" % (digits, line[m + "_vs_base"], digits, line[m + "_vs_base_se"],
+                                                 "*" if line[m + "_vs_base_resolved"] == "yes" else "",
+                                                 " u" if line[m + "_vs_base_design"] == "Welch" else ""))
         out.append("| " + " | ".join(cells) + " |")
     return "\n".join(out) + "\n"
 

@@ -108,7 +108,9 @@ def error_test(name, seeds, reference, base, column, scale):
                 resolved="yes" if low == low and (low > 0 or high < 0) else "no")
 
 
-def conclusions_accuracy(folder):
+def knob_findings(folder):
+    """Each setting against the base, in KNOBS' order: its knob, its price (cost_test) and its errors
+    (error_test), each with its adjusted p after Holm's correction over the opening table's comparisons."""
     settings = by_setting(read_rows(os.path.join(folder, "accuracy_seeds_runs.csv")))
     reference, base = settings[ACCURACY_REFERENCE], settings[ACCURACY_BASE]
     found = []
@@ -119,24 +121,65 @@ def conclusions_accuracy(folder):
             found.append((knob_of(seeds, base), name, cost_test(seeds, base), errors, len(seeds)))
     found.sort(key=lambda f: f[0][0])  # the knobs in KNOBS' order, each knob's settings as the CSV has them
     adjusted = iter(holm([p for f in found for p in [f[2][4]] + [c["p"] for _, c, _ in f[3]]]))
-    rows, total, resolved, survivors = [], 0, 0, []
-    for (_, label, value, base_value, unit), name, (median, mean, low, high, p, rounds), errors, seeds in found:
-        cost_holm, total = next(adjusted), total + 1 + len(errors)
-        cheaper, dearer = high < 1, low > 1
+    out = []
+    for knob, name, cost, errors, seeds in found:
+        median, mean, low, high, p, rounds = cost
+        cost_holm = next(adjusted)
+        out.append(dict(knob=knob, name=name, median=median, mean=mean, low=low, high=high, rounds=rounds,
+                        seeds=seeds, cheaper=high < 1, dearer=low > 1, cost_holm=cost_holm,
+                        errors=[(measure, c, digits, next(adjusted)) for measure, c, digits in errors]))
+    return out
+
+
+def survivors_of(findings):
+    """The comparisons of the opening table resolved and surviving Holm's correction over it."""
+    out = []
+    for f in findings:
+        if (f["cheaper"] or f["dearer"]) and f["cost_holm"] < 0.05:
+            out.append("%s's cost" % f["name"])
+        out += ["%s's error in %s" % (f["name"], measure) for measure, c, _, p_holm in f["errors"]
+                if c["resolved"] == "yes" and p_holm < 0.05]
+    return out
+
+
+def answer_accuracy(folder):
+    """The page's answer under its title: which prices are resolved, what N = 1 costs against N2, and
+    what survives Holm's correction over the opening table."""
+    findings = knob_findings(folder)
+    knob_words = lambda f: "%s %s%s" % (f["knob"][1], f["knob"][2], f["knob"][4])  # noqa: E731
+    knobs = [f for f in findings if f["name"] != ACCURACY_REFERENCE]
+    priced = ["%s (%s)" % (knob_words(f), "dearer" if f["dearer"] else "cheaper") for f in knobs
+              if f["dearer"] or f["cheaper"]]
+    n1 = next(f for f in findings if f["name"] == ACCURACY_REFERENCE)
+    total = sum(1 + len(f["errors"]) for f in findings)
+    survivors = survivors_of(findings)
+    return ("**The answer**: among the N = 2 knobs, %s. One N = 1 run costs %.2f (%.2f .. %.2f) N2 runs in its "
+            "round (the mean over %d rounds%s). %s of the %d comparisons of the table below %s Holm's correction%s." % (
+                ("only the prices of %s are resolved" % " and ".join(priced)) if priced else "no price is resolved",
+                n1["mean"], n1["low"], n1["high"], n1["rounds"],
+                "" if n1["dearer"] or n1["cheaper"] else ", not resolved from 1",
+                "None" if not survivors else "%d" % len(survivors), total,
+                "survive" if len(survivors) > 1 else "survives",
+                (": " + ", ".join(survivors)) if survivors else ""))
+
+
+def conclusions_accuracy(folder):
+    findings = knob_findings(folder)
+    rows, total, resolved = [], 0, 0
+    for f in findings:
+        (_, label, value, base_value, unit), name = f["knob"], f["name"]
+        total += 1 + len(f["errors"])
+        cheaper, dearer = f["cheaper"], f["dearer"]
         resolved += cheaper or dearer
-        if (cheaper or dearer) and cost_holm < 0.05:
-            survivors.append("%s's cost" % name)
         price = "cost: median %.2f, mean %.2f (%.2f .. %.2f)%s" % (
-            median, mean, low, high, "" if not (cheaper or dearer) else ("**" if cost_holm < 0.05 else "*"))
+            f["median"], f["mean"], f["low"], f["high"],
+            "" if not (cheaper or dearer) else ("**" if f["cost_holm"] < 0.05 else "*"))
         more, less, cells = [], [], []
-        for measure, c, digits in errors:
-            p_holm = next(adjusted)
+        for measure, c, digits, p_holm in f["errors"]:
             if c["resolved"] == "yes":
                 resolved += 1
                 (more if c["change"] > 0 else less).append(measure)
                 cells.append("%s %s" % (measure, change_cell(c, digits, p_holm)))
-                if p_holm < 0.05:
-                    survivors.append("%s's error in %s" % (name, measure))
         cost_words = "costs more" if dearer else "costs less" if cheaper else "cost not resolved"
         if name == ACCURACY_REFERENCE:
             finding = "%s = %s instead of %s = %s: %s; one N = %s run's error exceeds N = %s's own scatter in %s" % (
@@ -147,15 +190,16 @@ def conclusions_accuracy(folder):
             finding = "%s %s%s instead of %s%s: %s; %s" % (label, value, unit, base_value, unit, cost_words,
                                                          error_words or "no error resolved beyond N2's")
         error = ("error: " + ", ".join(cells) + ", the rest not resolved") if cells \
-            else "error: none of %d resolved" % len(errors)
-        runs = "%d seeds, %d rounds" % (seeds, rounds) if name != ACCURACY_REFERENCE else \
-            "%d seeds of %s, %d rounds" % (seeds, name, rounds)
+            else "error: none of %d resolved" % len(f["errors"])
+        runs = "%d seeds, %d rounds" % (f["seeds"], f["rounds"]) if name != ACCURACY_REFERENCE else \
+            "%d seeds of %s, %d rounds" % (f["seeds"], name, f["rounds"])
         rows.append(("**%s**: %s" % (name, finding), price + "; " + error, runs, COMMAND))
+    survivors = survivors_of(findings)
     return conclusions(rows) + "\n\n(%d comparisons, a cost and %d errors a row: %d resolved ('*'); %s after Holm's " \
         "correction over the %d ('**'). 'u': unpaired, Welch.)" % (
             total, len(ACCURACY_ERRORS), resolved, ("these survive: " + ", ".join(survivors)) if survivors else "none",
             total)
 
 
-TABLES = {"conclusions_accuracy": conclusions_accuracy, "accuracy_errors": accuracy_errors,
-          "accuracy_changes": accuracy_changes}
+TABLES = {"answer_accuracy": answer_accuracy, "conclusions_accuracy": conclusions_accuracy,
+          "accuracy_errors": accuracy_errors, "accuracy_changes": accuracy_changes}
