@@ -118,8 +118,11 @@ def lab_conclusion(lab):
     gap = lab_gap(lab)
     at_cs = sum(settled(t) for t in lab)
     place = "above" if gap["low"] > 0 else ("below" if gap["high"] < 0 else "not resolved from")
+    dilating = sum(t["dilatancy_end"] > SETTLED for t in lab)
+    caveat = (" %d of the %d tests still dilate at 40%%: their angles, and so the gap, are upper bounds."
+              % (dilating, len(lab))) if dilating else ""
     return ("Sheared where the laboratory measured it (cell 0.2 MPa, loose, to 40%% strain), the decks' phi_cs "
-            "lies %s the top of NE34's %.1f - %.1f deg." % ((place,) + NE34_PHI_CS),
+            "lies %s the top of NE34's %.1f - %.1f deg.%s" % ((place,) + NE34_PHI_CS + (caveat,)),
             "phi_cs %s deg at p' %s MPa; above %.1f by %s; %d of %d tests within |dilatancy| %.2f at the end"
             % (cell([t["phi_cs"] for t in lab], 1), cell([t["p_cs_MPa"] for t in lab], 2), NE34_PHI_CS[1],
                span(gap, 1, True), at_cs, len(lab), SETTLED),
