@@ -154,6 +154,12 @@ def main():
             rows += [r for r in csv.DictReader(f) if any(fnmatch.fnmatch(r["case"], p) for p in a.cases.split(","))]
     if not rows:
         sys.exit("cpt_interpretation.py: no case matches %s in %s" % (a.cases, " ".join(a.studies)))
+    piles = [r["case"] for r in rows if (r.get("tip_shape") or "cone") != "cone"]
+    if piles:
+        # a flat base's q_c column is the pile's base resistance q_b: the CPT's correlations do not apply
+        sys.exit("cpt_interpretation.py: %s %s a flat tip (tip_shape flat: the column q_c is a pile's base "
+                 "resistance q_b, not a cone's q_c); name the cone tests alone with --cases"
+                 % (", ".join(piles), "has" if len(piles) == 1 else "have"))
     result = table(rows, a.K)
     head = ["setting", "seeds"] + ["%s (se)" % m for m in MEASURES] + ["zone"]
     sep = " | " if a.markdown else "  "

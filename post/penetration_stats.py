@@ -5,8 +5,8 @@ sigma_lim0, neighbor_style and extra, the case's other in.cone / in.chamber vari
 from the cone and the weak sand from Table 1's), the number of seeds, the mean of q_c with its sd and
 standard error, and the means of the events, the inertial numbers, the kinetic energy's share, the
 steps and the time; then, for --vary FIELD, the change of q_c between settings that differ in FIELD
-alone (a numeric field's values in turn; a named field's against its first value: crushing 0,
-dense, cone), with its standard error, Welch's df, its 95% Student-t interval and p, and whether it
+alone (a numeric field's values in turn; a named field's every pair: crushing 0 -> 1, 0 -> region,
+1 -> region), with its standard error, Welch's df, its 95% Student-t interval and p, and whether it
 is resolved (the interval excludes zero: post/seeds.py's one rule); where both
 ran the same seeds, the change paired by seed too (each seed's own difference, free of the chambers'
 scatter); for --fit-log2 FIELD, the slope of q_c against log2 FIELD over all the runs of the
@@ -25,6 +25,9 @@ more, each seed's exponent between neighbouring levels and its change from one s
                               [--fit-power sigma_v] [--members] [--markdown] [--versus A B]
                               [--ratio A B] [--field q_c_MPa]
 
+--versus and --ratio stop, naming the columns that vary, where one side's pattern matches cases of
+more than one setting (each side must be one setting; the two sides may differ as the comparison
+intends). The output-only variables of extra (OUTPUT_ONLY: stress_every, vtk, ...) define no setting.
 Rows without a defining column (an older study.csv) take in.cone's default for it (DEFAULTS). Two
 rows of one setting and one seed are one run (a case run under two names): the first is kept, and
 a warning names them where their q_c differ, the sign of a column that should tell them apart.
@@ -45,12 +48,23 @@ SETTING = ["density", "N", "crushing", "v", "width", "ranks", "distribution", "s
            "tip_shape", "sigma_lim0", "neighbor_style", "extra"]
 # in.cone's defaults (sigma_lim0: in.grains', Table 1), for rows of CSVs written before these columns
 DEFAULTS = {"tip_shape": "cone", "sigma_lim0": "5e9", "neighbor_style": "multi", "extra": ""}
+# in.cone's variables that change what a test writes, not what it measures: they never split a setting
+OUTPUT_ONLY = ("stress_every", "vtk", "vtk_every", "output_every", "progress_every", "checkpoint_every", "label")
 MEANS = ["q_c_MPa", "events", "events_loaded", "I_tip", "I_chamber", "ke_share", "steps", "seconds", "particles", "grains",
          "I_G_near", "I_G_near0", "chamber_events"]
 
 
+def defining_extra(extra):
+    """The name=value pairs of a row's extra (',' or ';' between them) that define the test: the
+    output-only ones dropped, the rest in order of name."""
+    pairs = [p for p in extra.replace(";", ",").split(",") if p.strip()]
+    return ",".join(sorted(p.strip() for p in pairs if p.split("=", 1)[0].strip() not in OUTPUT_ONLY))
+
+
 def setting_of(row):
-    return tuple(row.get(k) or DEFAULTS.get(k, "") for k in SETTING)
+    values = dict((k, row.get(k) or DEFAULTS.get(k, "")) for k in SETTING)
+    values["extra"] = defining_extra(values["extra"])
+    return tuple(values[k] for k in SETTING)
 
 
 def all_groups(rows):
@@ -171,8 +185,10 @@ def print_changes(table, seeded, field):
     for members in families(table, field):
         numeric = all(math.isfinite(number(m[at])) for m in members)
         # a numeric field (v, sigma_v): each value against the next; a named one (crushing,
-        # density, tip_shape): each against the first (crushing 0, dense, cone)
-        for x, y in (zip(members, members[1:]) if numeric else ((members[0], m) for m in members[1:])):
+        # density, tip_shape): every pair, in the order of the values (crushing 0, 1, region)
+        pairs = zip(members, members[1:]) if numeric else \
+            ((x, y) for k, x in enumerate(members) for y in members[k + 1:])
+        for x, y in pairs:
             (nx, mx, _, ex), (ny, my, _, ey) = table[x]["q_c_MPa"], table[y]["q_c_MPa"]
             se = math.sqrt(ex ** 2 + ey ** 2)
             print("%s: %s %s -> %s: %.2f -> %.2f MPa, change %+.2f +- %.2f (%+.0f%%), %s (Welch, %d and %d seeds)"
@@ -246,12 +262,24 @@ def print_local_powers(seeded, members, at):
               % (members[k + 1][at], mean, se, n, verdict(mean, se, n - 1)))
 
 
+def one_setting(matched, pattern):
+    """Stops, naming the columns that vary, where the rows a pattern matches are not of one setting:
+    a comparison of two sides must not mix cases within a side (the 400 kPa pile with the 100 kPa cone)."""
+    settings = {setting_of(r) for r in matched}
+    if len(settings) > 1:
+        varying = [k for i, k in enumerate(SETTING) if len({s[i] for s in settings}) > 1]
+        sys.exit("penetration_stats.py: the cases of %s are of %d settings; they differ in %s (%s): name one setting"
+                 % (pattern, len(settings), ", ".join(varying), ", ".join(sorted(r["case"] for r in matched))))
+
+
 def picked(rows, pattern, field):
-    """{seed: value of field} of the cases named by pattern (the first row of a seed kept)."""
+    """{seed: value of field} of the cases named by pattern, all of one setting (the first row of a
+    seed kept)."""
     kept = dict()
-    for r in rows:
-        if fnmatch.fnmatch(r["case"], pattern):
-            kept.setdefault(r["seed"], r)
+    matched = [r for r in rows if fnmatch.fnmatch(r["case"], pattern)]
+    one_setting(matched, pattern)
+    for r in matched:
+        kept.setdefault(r["seed"], r)
     values = dict((seed, number(r.get(field, "nan"))) for seed, r in kept.items())
     values = dict((seed, x) for seed, x in values.items() if math.isfinite(x))
     if not values:

@@ -825,8 +825,9 @@ def fields(label):
 
 def case_stats_groups(liggghts, work):
     """post/penetration_stats.py tells apart what the study's columns tell apart: a cone, a pile
-    (tip_shape flat, stress_every), the weak sand's cone (sigma_lim0 5e8) and its pile, on the same
-    density, N, crushing, v and seeds, are four settings with their own means, named in the output;
+    (tip_shape flat; its stress_every, an output, names no setting), the weak sand's cone (sigma_lim0
+    5e8) and its pile, on the same density, N, crushing, v and seeds, are four settings with their own
+    means, named in the output;
     the same rows without those columns (an older study.csv) fall into one setting of in.cone's
     defaults, and the tool warns that rows of one seed there differ in q_c."""
     del liggghts
@@ -839,7 +840,8 @@ def case_stats_groups(liggghts, work):
     for name, (settings, q) in groups.items():
         label = [lab for lab, cases in members.items() if cases == [name + "1", name + "2", name + "3"]]
         check(len(label) == 1 and table[label[0]] == (3, round(sum(q) / 3, 2))
-              and all(fields(label[0]).get(k) == v for k, v in dict(DEFAULTS_NAMED, **settings).items() if v),
+              and all(fields(label[0]).get(k) == v for k, v in dict(DEFAULTS_NAMED, **settings).items() if v and k != "extra")
+              and "extra" not in fields(label[0]),
               "%s*: a setting of its own, 3 seeds, q_c %.2f MPa, named %s" % (name, sum(q) / 3, label and label[0]))
     old = write_study(os.path.join(work, "old.csv"), rows, drop=("tip_shape", "sigma_lim0", "neighbor_style", "extra"))
     table, members, _, warnings = run_stats(old)
@@ -916,6 +918,51 @@ def case_stats_versus(liggghts, work):
     check(changes == ["change +1 +- 0.163 (unpaired, Welch), 95% interval +0.547 .. +1.45, p 0.0036, resolved: yes",
                       "change +0 +- 0.208 (unpaired, Welch), 95% interval -0.613 .. +0.613, p 1, resolved: no"],
           "b against a: %s; c against b: %s" % tuple(changes + ["?", "?"])[:2])
+
+
+def stats_run(*args):
+    """post/penetration_stats.py on args: (exit status, stdout, stderr), whatever the status."""
+    proc = subprocess.run([sys.executable, STATS] + list(args), stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                          universal_newlines=True)
+    return proc.returncode, proc.stdout, proc.stderr
+
+
+def case_stats_settings_apart(liggghts, work):
+    """The statistics never mix settings silently. --versus and --ratio stop, naming the columns that
+    vary, where one side's pattern matches cases of two settings (a cone at 100 kPa and a pile at
+    400 kPa under one pattern: the mix that read 3.55 as a ratio); an output-only variable
+    (stress_every in extra) does not split the pile from the cone, so --vary tip_shape compares them;
+    --vary crushing compares every pair of modes (0 -> 1, 0 -> region and 1 -> region); and
+    post/cpt_interpretation.py refuses a flat tip (its q_c column is a pile's q_b)."""
+    del liggghts
+    rows = [("cone_s%d" % (k + 1), seed, q, {}) for k, (seed, q) in enumerate(zip(SEEDS, (1.0, 1.2, 1.4)))]
+    rows += [("cone_hi_s%d" % (k + 1), seed, q, {"sigma_v": "4e5"}) for k, (seed, q) in enumerate(zip(SEEDS, (3.0, 3.3, 3.6)))]
+    rows += [("pile_s%d" % (k + 1), seed, q, {"tip_shape": "flat", "extra": "stress_every=0.5"})
+             for k, (seed, q) in enumerate(zip(SEEDS, (2.0, 2.4, 2.8)))]
+    rows += [("all_s%d" % (k + 1), seed, q, {"crushing": "1"}) for k, (seed, q) in enumerate(zip(SEEDS, (0.6, 0.8, 1.0)))]
+    rows += [("off_s%d" % (k + 1), seed, q, {"crushing": "0"}) for k, (seed, q) in enumerate(zip(SEEDS, (1.5, 1.7, 1.9)))]
+    study = write_study(os.path.join(work, "apart.csv"), rows)
+    for option in ("--versus", "--ratio"):
+        rc, out, err = stats_run(study, option, "cone_*", "pile_*")
+        check(rc != 0 and "cone_*" in err and "sigma_v" in err and "2 settings" in err,
+              "%s with cone_* matching 100 and 400 kPa stops, naming sigma_v: %s" % (option, err.strip()[-200:]))
+        rc, out, err = stats_run(study, option, "cone_s*", "pile_*")
+        check(rc == 0, "%s on one setting a side runs: %s" % (option, err.strip()[-200:]))
+    rc, out, err = stats_run(study, "--vary", "tip_shape")
+    check(rc == 0 and re.search(r"tip_shape cone -> flat: 1\.20 -> 2\.40 MPa", out) is not None,
+          "--vary tip_shape compares the pile with the cone (stress_every does not split them): %s"
+          % [line for line in out.splitlines() if "tip_shape" in line])
+    rc, out, err = stats_run(study, "--vary", "crushing")
+    pairs = re.findall(r"crushing (\S+) -> (\S+):", out)
+    check(sorted(pairs) == [("0", "1"), ("0", "region"), ("1", "region")],
+          "--vary crushing compares every pair of modes: %s" % pairs)
+    proc = subprocess.run(["/usr/bin/python3", os.path.join(ROOT, "post", "cpt_interpretation.py"), study],
+                          stdout=subprocess.PIPE, stderr=subprocess.PIPE, universal_newlines=True)
+    check(proc.returncode != 0 and "pile_s1" in proc.stderr and "q_b" in proc.stderr,
+          "the CPT interpretation refuses the flat tip: %s" % proc.stderr.strip()[-200:])
+    proc = subprocess.run(["/usr/bin/python3", os.path.join(ROOT, "post", "cpt_interpretation.py"), study, "--cases", "cone_s*"],
+                          stdout=subprocess.PIPE, stderr=subprocess.PIPE, universal_newlines=True)
+    check(proc.returncode == 0, "and reads the cones alone: %s" % proc.stderr.strip()[-200:])
 
 
 def case_path_crushing(liggghts, work):
