@@ -224,10 +224,13 @@ def main():
         plateau = [r for r in history if r["depth_Dc"] >= a.plateau]
         qc = [r["q_c"] for r in plateau]
         fs = [r["f_s"] for r in plateau]
+        # the sleeve's share in the sand (in.cone's sleeve_in; a history written before it: nan, its
+        # f_s then over the whole sleeve)
+        sleeve_in = [r["sleeve_in"] for r in plateau if "sleeve_in" in r]
         mean = lambda v: sum(v) / len(v) if v else float("nan")  # noqa: E731
         sd = lambda v: math.sqrt(sum((x - mean(v)) ** 2 for x in v) / len(v)) if v else float("nan")  # noqa: E731
         row = {"label": label, "q_c_MPa": mean(qc) / 1e6, "q_c_sd_MPa": sd(qc) / 1e6, "f_s_kPa": mean(fs) / 1e3,
-               "f_s_sd_kPa": sd(fs) / 1e3, "depth_Dc": history[-1]["depth_Dc"], "events": history[-1]["events"],
+               "f_s_sd_kPa": sd(fs) / 1e3, "sleeve_in": mean(sleeve_in), "depth_Dc": history[-1]["depth_Dc"], "events": history[-1]["events"],
                "particles": history[-1]["particles"],
                "events_loaded": sum(1 for e in events if math.isfinite(e["force_ratio"])), "I_G_near": float("nan"), "I_G_far": float("nan"),
                "I_G_near0": float("nan"), "I_G_far0": float("nan"),
@@ -308,7 +311,7 @@ def main():
         fig.tight_layout()
         fig.savefig(os.path.join(a.dir, "gsd_%s.png" % a.out), dpi=120)
 
-    columns = ["label", "q_c_MPa", "q_c_sd_MPa", "f_s_kPa", "f_s_sd_kPa", "depth_Dc", "events", "events_loaded", "particles",
+    columns = ["label", "q_c_MPa", "q_c_sd_MPa", "f_s_kPa", "f_s_sd_kPa", "sleeve_in", "depth_Dc", "events", "events_loaded", "particles",
                "I_G_near", "I_G_far", "I_G_near0", "I_G_far0", "grains_near", "grains_far", "chamber_events",
                "v", "I_tip", "I_chamber", "ke_share", "events_path1", "events_path2", "events_far", "I_G_path", "I_G_path0"]
     with open(os.path.join(a.dir, "penetration_%s_summary.csv" % a.out), "w") as f:

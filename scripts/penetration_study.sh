@@ -54,10 +54,14 @@ header0="case,density,N,D_c_over_d50,crushing,v,width,ranks,distribution,sigma_v
 # the crushing about the tip's path (post/penetration.py): a study.csv with header0 alone gains these
 # columns, its rows empty there until the case "summarise" fills them
 path_columns="events_path1,events_path2,events_far,I_G_path,I_G_path0,I_G_far0"
-header="$header0,$path_columns"
+# sleeve_in: the sleeve's mean share in the sand over the read depths; f_s_kPa is over that length (a
+# row without it, run before in.cone divided by the embedded length: f_s over the whole sleeve)
+sleeve_columns="sleeve_in"
+header="$header0,$path_columns,$sleeve_columns"
 if [ "$dry" = 0 ]; then
   [ -f "$out/study.csv" ] || echo "$header" > "$out/study.csv"
   [ "$(head -n 1 "$out/study.csv")" != "$header0" ] || sed -i "1s/.*/$header/" "$out/study.csv"
+  [ "$(head -n 1 "$out/study.csv")" != "$header0,$path_columns" ] || sed -i "1s/.*/$header/" "$out/study.csv"
   [ "$(head -n 1 "$out/study.csv")" = "$header" ] || { echo "$out/study.csv: not this script's columns (an older study's, without those that tell the cases apart?): another OUT_DIR, or add them as studies/penetration/penetration_study.csv's were" >&2; exit 2; }
 fi
 # a deck's default for a variable: its 'variable NAME index VALUE' line
@@ -175,12 +179,12 @@ rows = list(csv.DictReader(open(sys.argv[1])))
 summary = next(csv.DictReader(open(sys.argv[2])))
 grains = int(float(open(sys.argv[3]).read().split("grains0 equal")[1].split()[0]))
 steps = int(float(re.search(r"CHECKED STEPS \\S+ OF (\\S+)", open(sys.argv[4]).read()).group(1)))
-print("$name,$density,$N,%.3f,$crushing,$v,$width,$ranks,$distribution,$sigma_v,$seed,%d,%d,%d,%s,%d,$seconds,%s,%s,%s,%s,%s,$fragment_density,$depth,%s,%s,%s,%s,%s,%s,$columns,%s" % (
+print("$name,$density,$N,%.3f,$crushing,$v,$width,$ranks,$distribution,$sigma_v,$seed,%d,%d,%d,%s,%d,$seconds,%s,%s,%s,%s,%s,$fragment_density,$depth,%s,%s,%s,%s,%s,%s,$columns,%s,%s" % (
     0.0357 / (0.21e-3 * $N), grains, int(float(rows[-1]["particles"])), int(float(rows[-1]["events"])),
     summary["events_loaded"], steps,
     summary["q_c_MPa"], summary["q_c_sd_MPa"], summary["f_s_kPa"], summary["I_G_near"], summary["I_G_far"],
     summary["I_G_near0"], summary["chamber_events"], summary["v"], summary["I_tip"], summary["I_chamber"], summary["ke_share"],
-    ",".join(summary[c] for c in "$path_columns".split(","))))
+    ",".join(summary[c] for c in "$path_columns".split(",")), summary.get("sleeve_in", "")))
 EOF
   tail -n 1 "$out/study.csv"
 done

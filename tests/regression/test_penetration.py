@@ -365,13 +365,32 @@ def all_in_zone(events, history):
                and -1.5 * DC - tolerance <= e["z"] - tip_at(history, e["step"]) <= 1.0 * DC + tolerance for e in events)
 
 @variants(*each_rank_count(1, 2))
+def check_sleeve(history, share=4.0, cone=0.866):
+    """f_s is the sleeve's force over its length in the sand: sleeve_in (its embedded share of 3.75
+    D_c) is 0 while the sleeve stands above the sand (the tip less than its cone's 0.866 D_c deep,
+    give or take the top wall's rise), grows with the tip's depth past that, never exceeds 1; f_s is 0
+    where it is 0, and elsewhere f_s pi D_c (3.75 D_c sleeve_in) / share is the sleeve's force."""
+    inside = [r for r in history if r["sleeve_in"] > 0]
+    check(all(0.0 <= r["sleeve_in"] <= 1.0 for r in history) and inside
+          and all(r["f_s"] == 0 for r in history if r["sleeve_in"] == 0)
+          and all(r["sleeve_in"] == 0 for r in history if r["depth_Dc"] < cone - 0.3),
+          "sleeve_in within 0 - 1, 0 (and f_s 0) above the sand, %d rows with the sleeve in it" % len(inside))
+    worst = max(abs(r["sleeve_in"] * 3.75 - (r["depth_Dc"] - cone)) for r in inside)
+    check(worst < 0.3, "the embedded length follows the tip's depth less the cone's height (largest gap %.3f D_c: the"
+          " top wall's rise)" % worst)
+    force = max(abs(r["f_s"] * math.pi * DC * 3.75 * DC * r["sleeve_in"] / share - r["F_sleeve"])
+                / max(abs(r["F_sleeve"]), 1e-9) for r in inside if abs(r["F_sleeve"]) > 0)
+    check(force < 1e-6, "f_s times the embedded area is the sleeve's force (largest relative gap %.1e)" % force)
+
+
 def case_cone_short(liggghts, work, ranks):
     """A short penetration (3 D_c) with crushing in the zone that follows the tip, on 1 and 2 ranks:
     the books (particles = grains + 13 x events at every row) and unique tags; q_c > 0 and rising
     with depth; every event inside the moving zone (1.5 D_c around the axis, from 1.5 D_c below the
     tip to 1 D_c above it) at its step; the VTK files of the particles and of the penetrometer read
-    back; post/penetration.py draws and summarises the test: the cone raised I_G near its tip above
-    that zone's in the consolidated chamber, and left the far field's as it was."""
+    back; f_s over the sleeve's length in the sand (check_sleeve); post/penetration.py draws and
+    summarises the test: the cone raised I_G near its tip above that zone's in the consolidated
+    chamber, and left the far field's as it was."""
     ranks = int(ranks)
     folder = prepare_chamber(liggghts, work, ranks)
     out = push(liggghts, folder, ranks, crushing="region", vtk_every=1)
@@ -385,6 +404,7 @@ def case_cone_short(liggghts, work, ranks):
     check(by_last_row == history[-1]["events"] and len(events) > 0,
           "%d events logged, %d of them by the last row, as it counts" % (len(events), by_last_row))
     check(all_in_zone(events, history), "every event inside the zone around the tip at its step")
+    check_sleeve(history)
     if has_vtk_dumps(liggghts):
         try:
             import vtk
@@ -701,9 +721,9 @@ def case_sector_refused(liggghts, work):
 def study_header():
     """The columns of scripts/penetration_study.sh's study.csv (its header line)."""
     script = open(STUDY).read()
-    columns = [re.search(r'^%s="([^"]*)"' % name, script, re.M).group(1) for name in ("header0", "path_columns")]
-    check(re.search(r'^header="\$header0,\$path_columns"', script, re.M) is not None,
-          "penetration_study.sh's header is header0 and path_columns")
+    columns = [re.search(r'^%s="([^"]*)"' % name, script, re.M).group(1) for name in ("header0", "path_columns", "sleeve_columns")]
+    check(re.search(r'^header="\$header0,\$path_columns,\$sleeve_columns"', script, re.M) is not None,
+          "penetration_study.sh's header is header0, path_columns and sleeve_columns")
     return ",".join(columns).split(",")
 
 
