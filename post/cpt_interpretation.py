@@ -154,6 +154,12 @@ def main():
             rows += [r for r in csv.DictReader(f) if any(fnmatch.fnmatch(r["case"], p) for p in a.cases.split(","))]
     if not rows:
         sys.exit("cpt_interpretation.py: no case matches %s in %s" % (a.cases, " ".join(a.studies)))
+    whole = [r["case"] for r in rows if not r.get("sleeve_in")]
+    if whole:
+        # f_s of a test run before in.cone divided by the sleeve's length in the sand: F_r reads low
+        sys.stderr.write("cpt_interpretation.py: warning: %s: f_s over the whole sleeve (no sleeve_in: run before in.cone "
+                         "divided by the embedded length); F_r and I_c read low where the sleeve was partly above the "
+                         "sand\n" % ", ".join(whole))
     piles = [r["case"] for r in rows if (r.get("tip_shape") or "cone") != "cone"]
     if piles:
         # a flat base's q_c column is the pile's base resistance q_b: the CPT's correlations do not apply
