@@ -27,8 +27,12 @@ the volume those events removed is in the gradings too), and writes there:
                          crushing about the tip's path (the axis above the final tip, the tip below it):
                          the test's events within 1 and --path D_c of it (events_path1, events_path2)
                          and beyond --far D_c of the axis (events_far), I_G within --path D_c of it
-                         after the test and before (I_G_path, I_G_path0)
-and prints the summary.
+                         after the test and before (I_G_path, I_G_path0); the sleeve's mean share in
+                         the sand over the plateau (sleeve_in: f_s is over that length); q_c's slope
+                         over the last 2 D_c (q_c_slope_last2, MPa per D_c: rows averaged in bins of
+                         0.25 D_c, the bins fitted; levelled off where the seeds' interval of the
+                         slopes holds zero, post/penetration_stats.py --levelling)
+and prints the summary, and per test a LEVELLING line with the slope and one test's rough interval.
 """
 import argparse
 import csv
@@ -39,6 +43,7 @@ import sys
 if not __package__:  # run as a file (python3 post/penetration.py): the folder above post/ holds the package
     sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 from post import requires  # noqa: E402
+from post.seeds import interval  # noqa: E402
 
 requires("penetration", "matplotlib")
 
@@ -187,6 +192,33 @@ def rate_measures(history, plateau, Dc, N):
             "I_chamber": rate / math.sqrt(p) if p > 0 else float("nan"), "ke_share": mean(shares)}
 
 
+LATE_SPAN = 2.0  # D_c: q_c has levelled off where its slope over the last LATE_SPAN of depth is not resolved
+LATE_BIN = 0.25  # D_c: rows averaged in bins of this depth before the fit (neighbouring rows are correlated)
+
+
+def late_slope(history, span=LATE_SPAN, width=LATE_BIN):
+    """q_c's slope (MPa per D_c) over the last span of the tip's depth: the rows averaged in bins of
+    width, the bins' means fitted by least squares; (slope, its 95% t interval low and high, bins).
+    One test's interval is rough (the bins still correlate); the seeds' interval of the slopes
+    (post/penetration_stats.py --levelling) decides whether q_c has levelled off."""
+    end = history[-1]["depth_Dc"]
+    bins = {}
+    for r in history:
+        if r["depth_Dc"] >= end - span:
+            bins.setdefault(min(int((end - r["depth_Dc"]) / width), int(span / width) - 1), []).append(r)
+    points = [(sum(r["depth_Dc"] for r in b) / len(b), sum(r["q_c"] for r in b) / len(b) / 1e6) for b in bins.values()]
+    n = len(points)
+    if n < 3:
+        return float("nan"), float("nan"), float("nan"), n
+    mx, my = sum(x for x, _ in points) / n, sum(y for _, y in points) / n
+    sxx = sum((x - mx) ** 2 for x, _ in points)
+    slope = sum((x - mx) * (y - my) for x, y in points) / sxx
+    residual = sum((y - my - slope * (x - mx)) ** 2 for x, y in points)
+    se = math.sqrt(residual / (n - 2) / sxx)
+    low, high, _ = interval(slope, se, n - 2)
+    return slope, low, high, n
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("labels", nargs="+", help="the tests' labels (or one comma-separated list)")
@@ -230,7 +262,8 @@ def main():
         mean = lambda v: sum(v) / len(v) if v else float("nan")  # noqa: E731
         sd = lambda v: math.sqrt(sum((x - mean(v)) ** 2 for x in v) / len(v)) if v else float("nan")  # noqa: E731
         row = {"label": label, "q_c_MPa": mean(qc) / 1e6, "q_c_sd_MPa": sd(qc) / 1e6, "f_s_kPa": mean(fs) / 1e3,
-               "f_s_sd_kPa": sd(fs) / 1e3, "sleeve_in": mean(sleeve_in), "depth_Dc": history[-1]["depth_Dc"], "events": history[-1]["events"],
+               "f_s_sd_kPa": sd(fs) / 1e3, "sleeve_in": mean(sleeve_in), "depth_Dc": history[-1]["depth_Dc"],
+               "q_c_slope_last2": late_slope(history)[0], "events": history[-1]["events"],
                "particles": history[-1]["particles"],
                "events_loaded": sum(1 for e in events if math.isfinite(e["force_ratio"])), "I_G_near": float("nan"), "I_G_far": float("nan"),
                "I_G_near0": float("nan"), "I_G_far0": float("nan"),
@@ -311,7 +344,7 @@ def main():
         fig.tight_layout()
         fig.savefig(os.path.join(a.dir, "gsd_%s.png" % a.out), dpi=120)
 
-    columns = ["label", "q_c_MPa", "q_c_sd_MPa", "f_s_kPa", "f_s_sd_kPa", "sleeve_in", "depth_Dc", "events", "events_loaded", "particles",
+    columns = ["label", "q_c_MPa", "q_c_sd_MPa", "f_s_kPa", "f_s_sd_kPa", "sleeve_in", "q_c_slope_last2", "depth_Dc", "events", "events_loaded", "particles",
                "I_G_near", "I_G_far", "I_G_near0", "I_G_far0", "grains_near", "grains_far", "chamber_events",
                "v", "I_tip", "I_chamber", "ke_share", "events_path1", "events_path2", "events_far", "I_G_path", "I_G_path0"]
     with open(os.path.join(a.dir, "penetration_%s_summary.csv" % a.out), "w") as f:
@@ -325,6 +358,11 @@ def main():
               % (row["label"], row["q_c_MPa"], row["q_c_sd_MPa"], row["f_s_kPa"], a.plateau, row["depth_Dc"],
                  row["events"], row["events_loaded"], row["particles"], row["I_G_near"], row["I_G_far"],
                  row["I_G_near0"], row["I_G_far0"], row["v"], row["I_tip"], row["I_chamber"], row["ke_share"]))
+    for label, history, _, _ in tests:
+        slope, low, high, bins = late_slope(history)
+        print("LEVELLING %s: q_c's slope over the last %g D_c (to %.2f D_c), %d bins of %g D_c: %+.3f MPa per D_c "
+              "(one test's 95%% interval %+.3f .. %+.3f; the seeds' interval decides: penetration_stats.py --levelling)"
+              % (label, LATE_SPAN, history[-1]["depth_Dc"], bins, LATE_BIN, slope, low, high))
 
 
 if __name__ == "__main__":

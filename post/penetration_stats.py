@@ -320,6 +320,27 @@ def print_versus(rows, first, second, field):
     print("  change %+.4g +- %.3g (unpaired, Welch), %s" % (change, se, verdict(change, se, welch_df(a[3], a[0], b[3], b[0]))))
 
 
+def print_levelling(seeded):
+    """Per setting: q_c's slope over the last 2 D_c (study.csv's q_c_slope_last2, post/penetration.py)
+    over the seeds, with its 95% t interval; levelled off where that interval holds zero (and how far
+    it reaches: a wide interval levels nothing), still rising where it lies above zero."""
+    print("\nq_c's slope over the last 2 D_c (MPa per D_c) over the seeds, 95% t interval")
+    for setting, members in seeded.items():
+        slopes = [number(r.get("q_c_slope_last2") or "nan") for r in members]
+        slopes = [s for s in slopes if math.isfinite(s)]
+        if not slopes:
+            continue
+        n, mean, _, se = statistics(slopes)
+        low, high, p = interval(mean, se, n - 1)
+        if not math.isfinite(low):
+            state = "one seed: not tested"
+        else:
+            state = "still rising" if low > 0 else ("still falling" if high < 0 else "levelled off (not resolved from zero)")
+        print("%s: %+.3f MPa per D_c (%s), %d seeds: %s"
+              % (label(setting), mean, "%+.3f .. %+.3f, p %.2g" % (low, high, p) if math.isfinite(low) else "no interval",
+                 n, state))
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("studies", nargs="+", help="study.csv files of scripts/penetration_study.sh")
@@ -335,6 +356,8 @@ def main():
                         help="fit q_c as a power of this numeric field (log q_c against log FIELD, a factor per seed)")
     parser.add_argument("--ratio", nargs=2, action="append", default=[], metavar=("A", "B"),
                         help="the ratio of pattern B's cases to pattern A's, unpaired and paired by seed")
+    parser.add_argument("--levelling", action="store_true", help="per setting, q_c's slope over the last 2 D_c over the"
+                        " seeds: levelled off where its 95%% interval holds zero")
     parser.add_argument("--field", default="q_c_MPa", help="the study's column that --versus and --ratio compare"
                         " (default q_c_MPa)")
     a = parser.parse_args()
@@ -357,6 +380,8 @@ def main():
         print_fit(table, seeded, field)
     for field in a.fit_power:
         print_power(table, seeded, field)
+    if a.levelling:
+        print_levelling(seeded)
     for first, second in a.versus:
         print_versus(rows, first, second, a.field)
     for first, second in a.ratio:

@@ -55,13 +55,16 @@ header0="case,density,N,D_c_over_d50,crushing,v,width,ranks,distribution,sigma_v
 # columns, its rows empty there until the case "summarise" fills them
 path_columns="events_path1,events_path2,events_far,I_G_path,I_G_path0,I_G_far0"
 # sleeve_in: the sleeve's mean share in the sand over the read depths; f_s_kPa is over that length (a
-# row without it, run before in.cone divided by the embedded length: f_s over the whole sleeve)
-sleeve_columns="sleeve_in"
-header="$header0,$path_columns,$sleeve_columns"
+# row without it, run before in.cone divided by the embedded length: f_s over the whole sleeve);
+# q_c_slope_last2: q_c's slope over the last 2 D_c (MPa per D_c, post/penetration.py): levelled off
+# where the seeds' interval holds zero (post/penetration_stats.py --levelling)
+steady_columns="sleeve_in,q_c_slope_last2"
+header="$header0,$path_columns,$steady_columns"
 if [ "$dry" = 0 ]; then
   [ -f "$out/study.csv" ] || echo "$header" > "$out/study.csv"
   [ "$(head -n 1 "$out/study.csv")" != "$header0" ] || sed -i "1s/.*/$header/" "$out/study.csv"
   [ "$(head -n 1 "$out/study.csv")" != "$header0,$path_columns" ] || sed -i "1s/.*/$header/" "$out/study.csv"
+  [ "$(head -n 1 "$out/study.csv")" != "$header0,$path_columns,sleeve_in" ] || sed -i "1s/.*/$header/" "$out/study.csv"
   [ "$(head -n 1 "$out/study.csv")" = "$header" ] || { echo "$out/study.csv: not this script's columns (an older study's, without those that tell the cases apart?): another OUT_DIR, or add them as studies/penetration/penetration_study.csv's were" >&2; exit 2; }
 fi
 # a deck's default for a variable: its 'variable NAME index VALUE' line
@@ -184,7 +187,7 @@ print("$name,$density,$N,%.3f,$crushing,$v,$width,$ranks,$distribution,$sigma_v,
     summary["events_loaded"], steps,
     summary["q_c_MPa"], summary["q_c_sd_MPa"], summary["f_s_kPa"], summary["I_G_near"], summary["I_G_far"],
     summary["I_G_near0"], summary["chamber_events"], summary["v"], summary["I_tip"], summary["I_chamber"], summary["ke_share"],
-    ",".join(summary[c] for c in "$path_columns".split(",")), summary.get("sleeve_in", "")))
+    ",".join(summary[c] for c in "$path_columns".split(",")), ",".join(summary.get(c, "") for c in "$steady_columns".split(","))))
 EOF
   tail -n 1 "$out/study.csv"
 done

@@ -721,9 +721,9 @@ def case_sector_refused(liggghts, work):
 def study_header():
     """The columns of scripts/penetration_study.sh's study.csv (its header line)."""
     script = open(STUDY).read()
-    columns = [re.search(r'^%s="([^"]*)"' % name, script, re.M).group(1) for name in ("header0", "path_columns", "sleeve_columns")]
-    check(re.search(r'^header="\$header0,\$path_columns,\$sleeve_columns"', script, re.M) is not None,
-          "penetration_study.sh's header is header0, path_columns and sleeve_columns")
+    columns = [re.search(r'^%s="([^"]*)"' % name, script, re.M).group(1) for name in ("header0", "path_columns", "steady_columns")]
+    check(re.search(r'^header="\$header0,\$path_columns,\$steady_columns"', script, re.M) is not None,
+          "penetration_study.sh's header is header0, path_columns and steady_columns")
     return ",".join(columns).split(",")
 
 
@@ -983,6 +983,33 @@ def case_stats_settings_apart(liggghts, work):
     proc = subprocess.run(["/usr/bin/python3", os.path.join(ROOT, "post", "cpt_interpretation.py"), study, "--cases", "cone_s*"],
                           stdout=subprocess.PIPE, stderr=subprocess.PIPE, universal_newlines=True)
     check(proc.returncode == 0, "and reads the cones alone: %s" % proc.stderr.strip()[-200:])
+
+
+def case_levelling(liggghts, work):
+    """Where q_c has levelled off. post/penetration.py's slope over the last 2 D_c on a stand-in
+    history whose q_c rises 2 MPa per D_c to 6 D_c and 0.3 after it (rows every 0.05 D_c to 8 D_c):
+    0.300 MPa per D_c over 8 bins, the early rise left out; penetration_stats.py --levelling over the
+    seeds' slopes of two settings: (0.1, -0.1, 0.02) levelled off (mean +0.007, its interval holding
+    zero), (0.5, 0.6, 0.7) still rising (+0.600, 95% interval +0.352 .. +0.848 with df 2)."""
+    del liggghts
+    sys.path.insert(0, os.path.dirname(POST))
+    import penetration  # noqa: E402
+    history = [{"depth_Dc": 0.05 * k, "q_c": 1e6 * (5 + 2 * min(0.05 * k, 6.0) + 0.3 * max(0.05 * k - 6.0, 0.0))}
+               for k in range(161)]
+    slope, low, high, bins = penetration.late_slope(history)
+    check(abs(slope - 0.3) < 1e-9 and bins == 8 and abs(low - 0.3) < 1e-9 and abs(high - 0.3) < 1e-9,
+          "slope over the last 2 D_c %.6f (%.6f .. %.6f) over %d bins" % (slope, low, high, bins))
+    rows = [("flat_s%d" % (k + 1), seed, 10.0, {"q_c_slope_last2": s}) for k, (seed, s) in enumerate(zip(SEEDS, (0.1, -0.1, 0.02)))]
+    rows += [("rising_s%d" % (k + 1), seed, 12.0, {"q_c_slope_last2": s, "sigma_v": "4e5"})
+             for k, (seed, s) in enumerate(zip(SEEDS, (0.5, 0.6, 0.7)))]
+    study = write_study(os.path.join(work, "levelling.csv"), rows)
+    rc, out, err = stats_run(study, "--levelling")
+    flat = [line for line in out.splitlines() if "sigma_v=1e5" in line and "per D_c" in line]
+    rising = [line for line in out.splitlines() if "sigma_v=4e5" in line and "per D_c" in line]
+    check(rc == 0 and len(flat) == 1 and "+0.007 MPa per D_c" in flat[0] and "levelled off" in flat[0],
+          "(0.1, -0.1, 0.02): levelled off: %s" % flat)
+    check(len(rising) == 1 and "+0.600 MPa per D_c (+0.352 .. +0.848" in rising[0] and "still rising" in rising[0],
+          "(0.5, 0.6, 0.7): still rising: %s" % rising)
 
 
 def case_path_crushing(liggghts, work):
