@@ -8,8 +8,10 @@ them), with the mean and standard error over the seeds.
     post/cpt_interpretation.py study.csv [more.csv ...] [--cases PATTERN] [--K 1.0] [--markdown] [--csv OUT]
                                [--plot OUT.png]
 
-The chamber is dry and its vertical stress sigma_v is the top wall's: q_t = q_c, sigma_v0 = sigma'_v0
-= sigma_v, the mean stress sigma'_m = sigma_v (1 + 2 K) / 3 (in.chamber's K, 1 by default). Per test:
+The chamber is dry: q_t = q_c, sigma_v0 = sigma'_v0 = sigma_v, the stress the cone meets: the study's
+sigma_v_axis where it has one (the vertical stress of the column about the axis, r < 2 D_c, measured
+before the test from in.cone's first stress dump: the refined chamber's fine column carries less
+than its top wall), else the top wall's nominal sigma_v (a warning names those rows); the mean stress sigma'_m = sigma_v (1 + 2 K) / 3 (in.chamber's K, 1 by default). Per test:
   F_r  = f_s / (q_t - sigma_v0) x 100 %
   Q_tn = ((q_t - sigma_v0) / p_a) (p_a / sigma'_v0)^n,  p_a = 100 kPa,
          n = 0.381 I_c + 0.05 sigma'_v0 / p_a - 0.15 (at most 1), iterated with I_c to a fixed point
@@ -81,7 +83,10 @@ def dr_jamiolkowski(q_c, sigma_m_eff):
 
 def interpret(row, K):
     """The measures of one study row: q_c (MPa), Q_tn, F_r (%), I_c, n, D_r by both correlations."""
-    q_c, f_s, sigma_v = float(row["q_c_MPa"]) * 1e3, float(row["f_s_kPa"]), float(row["sigma_v"]) / 1e3
+    # the stress the cone meets: the fine column's measured sigma_zz before the test where the study
+    # has it (sigma_v_axis, Pa), else the top wall's nominal sigma_v
+    q_c, f_s = float(row["q_c_MPa"]) * 1e3, float(row["f_s_kPa"])
+    sigma_v = float(row.get("sigma_v_axis") or row["sigma_v"]) / 1e3
     q_tn, f_r, i_c, n = normalised(q_c, f_s, sigma_v, sigma_v)
     return {"q_c_MPa": q_c / 1e3, "q_c_over_sigma_v": q_c / sigma_v, "Q_tn": q_tn, "F_r": f_r, "I_c": i_c, "n": n,
             "D_r_Baldi": dr_baldi(q_c, sigma_v), "D_r_Jamiolkowski": dr_jamiolkowski(q_c, sigma_v * (1 + 2 * K) / 3)}
@@ -160,6 +165,11 @@ def main():
         sys.stderr.write("cpt_interpretation.py: warning: %s: f_s over the whole sleeve (no sleeve_in: run before in.cone "
                          "divided by the embedded length); F_r and I_c read low where the sleeve was partly above the "
                          "sand\n" % ", ".join(whole))
+    nominal = [r["case"] for r in rows if not r.get("sigma_v_axis")]
+    if nominal:
+        sys.stderr.write("cpt_interpretation.py: warning: %s: normalised by the top wall's nominal sigma_v (no "
+                         "sigma_v_axis: run without a stress dump); the column about the cone may carry less\n"
+                         % ", ".join(nominal))
     piles = [r["case"] for r in rows if (r.get("tip_shape") or "cone") != "cone"]
     if piles:
         # a flat base's q_c column is the pile's base resistance q_b: the CPT's correlations do not apply

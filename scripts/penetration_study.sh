@@ -58,13 +58,29 @@ path_columns="events_path1,events_path2,events_far,I_G_path,I_G_path0,I_G_far0"
 # row without it, run before in.cone divided by the embedded length: f_s over the whole sleeve);
 # q_c_slope_last2: q_c's slope over the last 2 D_c (MPa per D_c, post/penetration.py): levelled off
 # where the seeds' interval holds zero (post/penetration_stats.py --levelling)
-steady_columns="sleeve_in,q_c_slope_last2"
+# sigma_v_axis: the vertical stress of the column about the axis (r < 2 D_c, Pa) before the test,
+# from in.cone's first stress dump (post/chamber_profiles.py; empty without stress_every), the stress
+# the cone meets, which post/cpt_interpretation.py normalises by
+steady_columns="sleeve_in,q_c_slope_last2,sigma_v_axis"
 header="$header0,$path_columns,$steady_columns"
+
+# sigma_zz (Pa) of the column r < 2 D_c in a test's first stress dump (the chamber at rest before the
+# push); nothing without the dump
+axis_stress() {
+  [ -f "$1" ] || return 0
+  local first folder
+  first=$(awk '/ITEM: TIMESTEP/ {getline; print; exit}' "$1")
+  folder=$(dirname "$1")
+  (cd "$folder" && /usr/bin/python3 "$here/post/chamber_profiles.py" "$1" --snapshot "$first" --dr 2 --rmax 0.0714 \
+     --out axis_stress > /dev/null) || return 0
+  /usr/bin/python3 -c 'import csv, sys; print(next(csv.DictReader(open(sys.argv[1])))["sigma_zz"])' "$folder/axis_stress.csv"
+}
 if [ "$dry" = 0 ]; then
   [ -f "$out/study.csv" ] || echo "$header" > "$out/study.csv"
   [ "$(head -n 1 "$out/study.csv")" != "$header0" ] || sed -i "1s/.*/$header/" "$out/study.csv"
   [ "$(head -n 1 "$out/study.csv")" != "$header0,$path_columns" ] || sed -i "1s/.*/$header/" "$out/study.csv"
   [ "$(head -n 1 "$out/study.csv")" != "$header0,$path_columns,sleeve_in" ] || sed -i "1s/.*/$header/" "$out/study.csv"
+  [ "$(head -n 1 "$out/study.csv")" != "$header0,$path_columns,sleeve_in,q_c_slope_last2" ] || sed -i "1s/.*/$header/" "$out/study.csv"
   [ "$(head -n 1 "$out/study.csv")" = "$header" ] || { echo "$out/study.csv: not this script's columns (an older study's, without those that tell the cases apart?): another OUT_DIR, or add them as studies/penetration/penetration_study.csv's were" >&2; exit 2; }
 fi
 # a deck's default for a variable: its 'variable NAME index VALUE' line
@@ -174,6 +190,7 @@ EOF
              "${consolidation[@]}" "$name")
   echo "$summary"
   history=$dir/penetration/penetration_${name}_N${N}.csv
+  axis_stress=$(axis_stress "$dir/penetration/stress_${name}_N${N}.liggghts")
   columns=$(case_columns "$cone_vars" "$chamber_vars")
   python3 - "$history" "$dir/penetration/penetration_${name}_summary.csv" "$dir/penetration/chamber_${density}_N${N}.in" \
     "$dir/penetration/screen.txt" <<EOF >> "$out/study.csv"
@@ -187,7 +204,8 @@ print("$name,$density,$N,%.3f,$crushing,$v,$width,$ranks,$distribution,$sigma_v,
     summary["events_loaded"], steps,
     summary["q_c_MPa"], summary["q_c_sd_MPa"], summary["f_s_kPa"], summary["I_G_near"], summary["I_G_far"],
     summary["I_G_near0"], summary["chamber_events"], summary["v"], summary["I_tip"], summary["I_chamber"], summary["ke_share"],
-    ",".join(summary[c] for c in "$path_columns".split(",")), ",".join(summary.get(c, "") for c in "$steady_columns".split(","))))
+    ",".join(summary[c] for c in "$path_columns".split(",")),
+    ",".join(summary.get(c, "") for c in "$steady_columns".split(",") if c != "sigma_v_axis") + ",$axis_stress"))
 EOF
   tail -n 1 "$out/study.csv"
 done

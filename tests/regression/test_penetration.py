@@ -811,7 +811,8 @@ def write_study(path, rows, drop=()):
     header = [c for c in study_header() if c not in drop]
     base = {"density": "dense", "N": "80", "D_c_over_d50": "2.125", "crushing": "region", "v": "0.5", "width": "10",
             "ranks": "2", "distribution": "normal_clipped_originals", "sigma_v": "1e5", "fragment_density": "scaled",
-            "depth": "4", "tip_shape": "cone", "sigma_lim0": "5e9", "neighbor_style": "multi", "extra": ""}
+            "depth": "4", "tip_shape": "cone", "sigma_lim0": "5e9", "neighbor_style": "multi", "extra": "",
+            "sigma_v_axis": "", "q_c_slope_last2": ""}
     with open(path, "w") as f:
         writer = csv.DictWriter(f, header, restval="1", extrasaction="ignore")
         writer.writeheader()
@@ -1110,7 +1111,8 @@ def case_cpt_interpretation(liggghts, work):
     rows = [("a_s1", SEEDS[0], 10.0, {"sigma_v": "1e5", "f_s_kPa": "50"}),
             ("b_s1", SEEDS[0], 10.0, {"sigma_v": "4e5", "f_s_kPa": "50"}),
             ("c_s1", SEEDS[0], 9.0, {"sigma_v": "1e5", "f_s_kPa": "50", "density": "loose"}),
-            ("c_s2", SEEDS[1], 11.0, {"sigma_v": "1e5", "f_s_kPa": "50", "density": "loose"})]
+            ("c_s2", SEEDS[1], 11.0, {"sigma_v": "1e5", "f_s_kPa": "50", "density": "loose"}),
+            ("d_s1", SEEDS[0], 10.0, {"sigma_v": "1e5", "f_s_kPa": "50", "sigma_v_axis": "8e4", "N": "34"})]
     study = write_study(os.path.join(work, "cpt.csv"), rows)
     out = os.path.join(work, "cpt_out.csv")
     proc = subprocess.run(["/usr/bin/python3", os.path.join(ROOT, "post", "cpt_interpretation.py"), study, "--csv", out],
@@ -1134,6 +1136,19 @@ def case_cpt_interpretation(liggghts, work):
           "two seeds: Q_tn %s +- %s (99 +- 10), I_c %s the mean of theirs (%.6f)"
           % (pair["Q_tn"], pair["Q_tn_se"], pair["I_c"], sum(i_c) / 2))
 
+    # normalised by the stress the cone meets (sigma_v_axis 80 kPa, the top wall's 100): the fixed point
+    # of n = 0.381 I_c + 0.05 (80 / 100) - 0.15 with Q_tn = ((10000 - 80) / 100) (100 / 80)^n
+    n_fix = 0.5
+    for _ in range(200):
+        q_fix = (10000.0 - 80.0) / 100.0 * (100.0 / 80.0) ** n_fix
+        i_fix = math.hypot(3.47 - math.log10(q_fix), math.log10(100.0 * 50.0 / (10000.0 - 80.0)) + 1.22)
+        n_fix = min(1.0, 0.381 * i_fix + 0.05 * 0.8 - 0.15)
+    measured = table["d_s1"]
+    check(abs(float(measured["Q_tn"]) - q_fix) < 1e-3 * q_fix and abs(float(measured["I_c"]) - i_fix) < 1e-4,
+          "normalised by sigma_v_axis (80 kPa): Q_tn %s, I_c %s (expected %.4f, %.5f)" % (measured["Q_tn"], measured["I_c"], q_fix, i_fix))
+    nominal = [line for line in proc.stderr.splitlines() if "nominal" in line]
+    check(len(nominal) == 1 and "a_s1" in nominal[0] and "d_s1" not in nominal[0],
+          "the rows without sigma_v_axis are named as normalised by the nominal stress: %s" % nominal)
 
 if __name__ == "__main__":
     test_main(globals(), sys.argv[1:])
