@@ -364,7 +364,7 @@ def all_in_zone(events, history):
     return all(math.hypot(e["x"], e["y"]) <= 1.5 * DC + tolerance
                and -1.5 * DC - tolerance <= e["z"] - tip_at(history, e["step"]) <= 1.0 * DC + tolerance for e in events)
 
-@variants(*each_rank_count(1, 2))
+
 def check_sleeve(history, share=4.0, cone=0.866):
     """f_s is the sleeve's force over its length in the sand: sleeve_in (its embedded share of 3.75
     D_c) is 0 while the sleeve stands above the sand (the tip less than its cone's 0.866 D_c deep,
@@ -383,6 +383,7 @@ def check_sleeve(history, share=4.0, cone=0.866):
     check(force < 1e-6, "f_s times the embedded area is the sleeve's force (largest relative gap %.1e)" % force)
 
 
+@variants(*each_rank_count(1, 2))
 def case_cone_short(liggghts, work, ranks):
     """A short penetration (3 D_c) with crushing in the zone that follows the tip, on 1 and 2 ranks:
     the books (particles = grains + 13 x events at every row) and unique tags; q_c > 0 and rising
