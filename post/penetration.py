@@ -43,6 +43,7 @@ import sys
 if not __package__:  # run as a file (python3 post/penetration.py): the folder above post/ holds the package
     sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 from post import requires  # noqa: E402
+from post.critical_state import least_squares  # noqa: E402
 from post.seeds import interval  # noqa: E402
 
 requires("penetration", "matplotlib")
@@ -210,12 +211,9 @@ def late_slope(history, span=LATE_SPAN, width=LATE_BIN):
     n = len(points)
     if n < 3:
         return float("nan"), float("nan"), float("nan"), n
-    mx, my = sum(x for x, _ in points) / n, sum(y for _, y in points) / n
-    sxx = sum((x - mx) ** 2 for x, _ in points)
-    slope = sum((x - mx) * (y - my) for x, y in points) / sxx
-    residual = sum((y - my - slope * (x - mx)) ** 2 for x, y in points)
-    se = math.sqrt(residual / (n - 2) / sxx)
-    low, high, _ = interval(slope, se, n - 2)
+    fit = least_squares([[1.0] * n, [x for x, _ in points]], [y for _, y in points])
+    slope, se = float(fit["coefficients"][1]), float(fit["se"][1])
+    low, high, _ = interval(slope, se, fit["df"])
     return slope, low, high, n
 
 

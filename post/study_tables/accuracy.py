@@ -5,7 +5,7 @@ the one rule (bench/accuracy_seeds.sh writes accuracy_seeds_runs.csv)."""
 import os
 import statistics as py_statistics
 
-from post.seeds import compare, holm, interval, statistics, welch
+from post.seeds import compare, holm, interval, resolved, statistics, welch
 from post.study_tables.common import by_setting, cell, change_cell, conclusions, read_rows, seed_values
 
 PAGE = "studies/accuracy/README.md"
@@ -104,8 +104,7 @@ def error_test(name, seeds, reference, base, column, scale):
         return compare(seed_values(base, column, scale), seed_values(seeds, column, scale))
     change, se, df = welch(seed_values(reference, column, scale).values(), seed_values(base, column, scale).values())
     low, high, p = interval(change, se, df)
-    return dict(change=change, low=low, high=high, p=p, design="unpaired (Welch)",
-                resolved="yes" if low == low and (low > 0 or high < 0) else "no")
+    return dict(change=change, low=low, high=high, p=p, design="unpaired (Welch)", resolved=resolved(change, se, df))
 
 
 def knob_findings(folder):
@@ -165,19 +164,19 @@ def answer_accuracy(folder):
 
 def conclusions_accuracy(folder):
     findings = knob_findings(folder)
-    rows, total, resolved = [], 0, 0
+    rows, total, n_resolved = [], 0, 0
     for f in findings:
         (_, label, value, base_value, unit), name = f["knob"], f["name"]
         total += 1 + len(f["errors"])
         cheaper, dearer = f["cheaper"], f["dearer"]
-        resolved += cheaper or dearer
+        n_resolved += cheaper or dearer
         price = "cost: median %.2f, mean %.2f (%.2f .. %.2f)%s" % (
             f["median"], f["mean"], f["low"], f["high"],
             "" if not (cheaper or dearer) else ("**" if f["cost_holm"] < 0.05 else "*"))
         more, less, cells = [], [], []
         for measure, c, digits, p_holm in f["errors"]:
             if c["resolved"] == "yes":
-                resolved += 1
+                n_resolved += 1
                 (more if c["change"] > 0 else less).append(measure)
                 cells.append("%s %s" % (measure, change_cell(c, digits, p_holm)))
         cost_words = "costs more" if dearer else "costs less" if cheaper else "cost not resolved"
@@ -197,7 +196,7 @@ def conclusions_accuracy(folder):
     survivors = survivors_of(findings)
     return conclusions(rows) + "\n\n(%d comparisons, a cost and %d errors a row: %d resolved ('*'); %s after Holm's " \
         "correction over the %d ('**'). 'u': unpaired, Welch.)" % (
-            total, len(ACCURACY_ERRORS), resolved, ("these survive: " + ", ".join(survivors)) if survivors else "none",
+            total, len(ACCURACY_ERRORS), n_resolved, ("these survive: " + ", ".join(survivors)) if survivors else "none",
             total)
 
 

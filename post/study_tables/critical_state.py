@@ -7,7 +7,7 @@ Every sentence of the conclusions is keyed to the numbers it states."""
 import os
 
 from post import critical_state as cs
-from post.seeds import holm, interval, one_sample
+from post.seeds import holm, interval, one_sample, resolved
 from post.study_tables.common import cell, conclusions
 
 PAGE = "studies/critical_state/README.md"
@@ -191,7 +191,7 @@ def coefficient(fit, k):
     """A least-squares coefficient against zero in compare()'s terms."""
     value, se = fit["coefficients"][k], fit["se"][k]
     low, high, p = interval(value, se, fit["df"])
-    return dict(change=value, low=low, high=high, p=p, resolved="yes" if low > 0 or high < 0 else "no")
+    return dict(change=value, low=low, high=high, p=p, resolved=resolved(value, se, fit["df"]))
 
 
 def span(c, digits, signed=False):
@@ -204,8 +204,7 @@ def lab_gap(lab):
     """phi_cs over the seeds less the top of NE34's range, as a change with its 95% t interval."""
     mean, se, df = one_sample([t["phi_cs"] - NE34_PHI_CS[1] for t in lab])
     low, high, p = interval(mean, se, df)
-    return dict(change=mean, se=se, df=df, low=low, high=high, p=p,
-                resolved="yes" if low > 0 or high < 0 else "no")
+    return dict(change=mean, se=se, df=df, low=low, high=high, p=p, resolved=resolved(mean, se, df))
 
 
 def settled(t):

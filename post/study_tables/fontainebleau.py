@@ -28,12 +28,19 @@ def runs_by_test(rows):
     return out
 
 
-def against_paper(values, paper):
-    """The runs' mean over the paper's value, in percent, with its 95% t interval (signed)."""
+def paper_change(values, paper):
+    """(n, mean, low, high): the runs over the paper's value, in percent, with the 95% t interval of
+    the mean (nans for fewer than two runs)."""
     n, mean, _, se = statistics([100.0 * (v / paper - 1.0) for v in values])
+    low, high, _ = interval(mean, se, n - 1) if n > 1 else (float("nan"),) * 3
+    return n, mean, low, high
+
+
+def against_paper(values, paper):
+    """paper_change() as a cell, signed: 'mean (low .. high)'."""
+    n, mean, low, high = paper_change(values, paper)
     if n < 2:
         return "%+.0f" % mean if n else ""
-    low, high, _ = interval(mean, se, n - 1)
     return "%+.0f (%+.0f .. %+.0f)" % (mean, low, high)
 
 
@@ -66,24 +73,43 @@ IO_WHERE = (("events", "the tests' ends"), ("events_first_load", "the first load
             ("events_p10MPa", "p' = 10 MPa"), ("events_p50MPa", "p' = 50 MPa"))
 
 
+def per_grain(row, column="events"):
+    """A run's count in column (events by default) per initial grain."""
+    return float(row[column]) / float(row["initial_particles"])
+
+
+def paper_per_grain(test, n):
+    return PAPER[(test, n)][2] / float(PAPER[(test, n)][0])
+
+
+def paper_io(n):
+    """The paper's I - O events per initial grain at scale n (its one run each)."""
+    return (PAPER[("I", n)][2] - PAPER[("O", n)][2]) / float(PAPER[("O", n)][0])
+
+
+def io_change(o, i, value=per_grain):
+    """I - O of value(row) over {seed: row} of each test, by the one rule (paired by seed where it
+    pairs)."""
+    return compare(dict((s, value(r)) for s, r in o.items()), dict((s, value(r)) for s, r in i.items()))
+
+
 def table3_io(folder):
     runs = runs_by_test(read_rows(os.path.join(folder, "table3_runs.csv")))
     found = []
     for n in ("2", "1.5", "1"):
         o, i = runs.get(("O", n), {}), runs.get(("I", n), {})
         for column, where in IO_WHERE if any(s in i for s in o) else ():
-            per_grain = lambda r: float(r[column]) / float(r["initial_particles"])  # noqa: E731
-            found.append((n, column, where, compare(dict((s, per_grain(o[s])) for s in o if o[s].get(column)),
-                                                    dict((s, per_grain(i[s])) for s in i if i[s].get(column)))))
+            found.append((n, column, where, io_change(dict((s, r) for s, r in o.items() if r.get(column)),
+                                                      dict((s, r) for s, r in i.items() if r.get(column)),
+                                                      lambda r, c=column: per_grain(r, c))))
     adjusted = holm([c["p"] for *_, c in found])
     lines = ["| N | where | seeds paired | I - O events per initial grain (95%% interval) | p | resolved | Holm (%d) "
              "| design | paper |" % len(found), "|---|---|---|---|---|---|---|---|---|"]
     for (n, column, where, c), p_holm in zip(found, adjusted):
-        paper = (PAPER[("I", n)][2] - PAPER[("O", n)][2]) / float(PAPER[("O", n)][0])
         lines.append("| %s | %s | %d | %s | %s | %s | %s | %s | %s |"
                      % (n, where, c["pairs"], interval_cell(c, 4), "%.2g" % c["p"] if c["p"] == c["p"] else "",
                         c["resolved"], ("yes" if p_holm < 0.05 else "no") if p_holm == p_holm else "", c["design"],
-                        "%+.4f" % paper if column == "events" else ""))
+                        "%+.4f" % paper_io(n) if column == "events" else ""))
     return "\n".join(lines)
 
 
@@ -98,15 +124,14 @@ def io_scatter(folder):
              "paper's I - O / that sd | P(one pair of runs reaches it) | after Holm (3) |", "|---|---|---|---|---|---|---|---|---|"]
     found = []
     for n in ("2", "1.5", "1"):
-        per_grain = [[float(r["events"]) / float(r["initial_particles"]) for r in runs.get((test, n), {}).values()]
-                     for test in ("O", "I")]
-        if min(len(v) for v in per_grain) < 2:
+        shares = [[per_grain(r) for r in runs.get((test, n), {}).values()] for test in ("O", "I")]
+        if min(len(v) for v in shares) < 2:
             continue
-        sd_o, sd_i = (py_statistics.stdev(v) for v in per_grain)
+        sd_o, sd_i = (py_statistics.stdev(v) for v in shares)
         sd = math.hypot(sd_o, sd_i)
-        paper = (PAPER[("I", n)][2] - PAPER[("O", n)][2]) / float(PAPER[("O", n)][0])
-        n_o, n_i = len(per_grain[0]), len(per_grain[1])
-        mean = py_statistics.mean(per_grain[1]) - py_statistics.mean(per_grain[0])
+        paper = paper_io(n)
+        n_o, n_i = len(shares[0]), len(shares[1])
+        mean = py_statistics.mean(shares[1]) - py_statistics.mean(shares[0])
         spread = math.sqrt(sd_o ** 2 * (1 + 1.0 / n_o) + sd_i ** 2 * (1 + 1.0 / n_i))
         df = welch_df(sd_o * math.sqrt(1 + 1.0 / n_o), n_o, sd_i * math.sqrt(1 + 1.0 / n_i), n_i)
         chance = t_tail((paper - mean) / spread, df) / 2.0
@@ -191,7 +216,6 @@ def upscaling_changes(folder):
 
 def upscaling(folder):
     runs, changes, adjusted = upscaling_changes(folder)
-    found = changes
     lines = ["| measure | O-1 | O-1.5 - O-1 | O-2 - O-1 | I-1 | I-1.5 - I-1 | I-2 - I-1 |", "|---|---|---|---|---|---|---|"]
     for column, label, digits in UPSCALING_MEASURES:
         cells = []
@@ -205,14 +229,7 @@ def upscaling(folder):
                 cells.append(change_cell(c, digits, adjusted[(test, n, column)]))
         lines.append("| %s | %s |" % (label, " | ".join(cells)))
     return "\n".join(lines) + "\n\n(%d changes; '*' resolved, '**' also after Holm's correction over them; 'u': unpaired, " \
-        "Welch; the others paired on the seeds both ran)" % len(found)
-
-
-def per_grain_changes(runs, n, column="events"):
-    """I - O events per initial grain at scale n, by the one rule (paired by seed where it pairs)."""
-    per_grain = lambda r: float(r[column]) / float(r["initial_particles"])  # noqa: E731
-    return compare(dict((s, per_grain(r)) for s, r in runs.get(("O", n), {}).items()),
-                   dict((s, per_grain(r)) for s, r in runs.get(("I", n), {}).items()))
+        "Welch; the others paired on the seeds both ran)" % len(changes)
 
 
 def io_verdict(folder):
@@ -222,16 +239,13 @@ def io_verdict(folder):
     rows = read_rows(os.path.join(folder, "io_mechanisms_runs.csv"))
     above, run, short = [], [], []
     for variant in [v for v in io_variants(folder) if v != "decks"]:
-        o = dict((r["seed"], float(r["events"]) / float(r["initial_particles"])) for r in rows
-                 if r["variant"] == variant and r["test"] == "O")
-        i = dict((r["seed"], float(r["events"]) / float(r["initial_particles"])) for r in rows
-                 if r["variant"] == variant and r["test"] == "I")
-        if len(o) < 3 or len(i) < 3:
+        runs = variant_runs(rows, variant)
+        if len(runs["O"]) < 3 or len(runs["I"]) < 3:
             continue
-        if any(stress_reached(r) < LOADED_MPA for r in rows if r["variant"] == variant):
+        if any(stress_reached(r) < LOADED_MPA for test in runs.values() for r in test.values()):
             short.append(variant)
             continue
-        c = compare(o, i)
+        c = io_change(runs["O"], runs["I"])
         run.append((variant, c))
         if c["low"] > 0:
             above.append(variant)
@@ -245,8 +259,7 @@ def conclusions_fontainebleau(folder):
     seeds = lambda *keys: "%s seeds" % "/".join(str(len(runs.get(k, {}))) for k in keys)  # noqa: E731
     vs_paper = lambda key: "%s-%s %s%%" % (key[0], key[1], against_paper(events(key), PAPER[key][2]))  # noqa: E731
     first = [100.0 * float(r["events_first_load"]) / float(r["events"]) for k in ORDER for r in runs.get(k, {}).values()]
-    io = [(n, per_grain_changes(runs, n)) for n in ("2", "1.5", "1")]
-    paper_io = lambda n: (PAPER[("I", n)][2] - PAPER[("O", n)][2]) / float(PAPER[("O", n)][0])  # noqa: E731
+    io = [(n, io_change(runs.get(("O", n), {}), runs.get(("I", n), {}))) for n in ("2", "1.5", "1")]
     above, tried, short = io_verdict(folder)
     if above:
         mechanisms = "%s reverses the I - O order" % ", ".join(above)
@@ -258,11 +271,10 @@ def conclusions_fontainebleau(folder):
     _, ups, ups_holm = upscaling_changes(folder)
     readings_rows = read_rows(os.path.join(folder, "readings_runs.csv"))
     reading = lambda f: reading_values(readings_rows, f, "O", "events_per_grain").values()  # noqa: E731
-    o_paper = PAPER[("O", "2")][2] / float(PAPER[("O", "2")][0])
     bounds = []
     for key in (("O", "1"), ("I", "1")):
-        n, mean, _, se = statistics([100.0 * (v / PAPER[key][2] - 1.0) for v in events(key)])
-        bounds += list(interval(mean, se, n - 1)[:2]) if n > 1 else [mean]
+        n, mean, low, high = paper_change(events(key), PAPER[key][2])
+        bounds += [low, high] if n > 1 else [mean]
     within = math.ceil(max(abs(b) for b in bounds))
     rows = [
         ("At N = 1 the events lie within %d%% of Table 3's." % within,
@@ -289,7 +301,7 @@ def conclusions_fontainebleau(folder):
         ("At the paper's sigma_lim0 (5 GPa) the truncated normal breaks a fifth of Table 3's grains; the zero-strength "
          "reading comes near them.",
          "O-2 events / N_i at 100 MPa: clipped %s, normal %s, paper %.3f" % (cell(reading("clipped"), 3),
-                                                                             cell(reading("normal"), 3), o_paper),
+                                                                             cell(reading("normal"), 3), paper_per_grain("O", "2")),
          "5 seeds", "bash scripts/strength_readings.sh runs/readings && cp runs/readings/readings_runs.csv studies/fontainebleau/"),
         ("Matching the yield stress with the truncated normal breaks several times Table 3's grains.",
          "O-2 events / N_i at 100 MPa, sigma_lim0 0.88 GPa: %s" % cell(reading("matched_0.88GPa"), 3), "5 seeds",
@@ -355,6 +367,15 @@ def stress_reached(r):
 LOADED_MPA = 95.0  # a run whose walls end below this never carried the paper's 100 MPa
 
 
+def variant_runs(rows, variant):
+    """{test: {seed: row}} of one variant's runs at N = 2 (the first row of a seed kept)."""
+    runs = {"O": {}, "I": {}}
+    for r in rows:
+        if r["variant"] == variant and r["N"] == "2":
+            runs[r["test"]].setdefault(r["seed"], r)
+    return runs
+
+
 def io_variants(folder):
     """{variant: (the deck variables, what it tests)} of io_variants.csv, in its order."""
     return dict((r["variant"], (r["vars"], r["tests"])) for r in read_rows(os.path.join(folder, "io_variants.csv")))
@@ -366,21 +387,14 @@ def io_mechanisms(folder):
     correction over the variants) and after the first load, and the oedometer's K0 and p' at
     sigma_v = 100 MPa."""
     rows = read_rows(os.path.join(folder, "io_mechanisms_runs.csv"))
-    paper = (PAPER[("I", "2")][2] - PAPER[("O", "2")][2]) / float(PAPER[("O", "2")][0])
-    per_grain = lambda r, column: float(r[column]) / float(r["initial_particles"])  # noqa: E731
     found = []
     for variant, (_, tests) in io_variants(folder).items():
-        runs = {"O": {}, "I": {}}
-        for r in rows:
-            if r["variant"] == variant and r["N"] == "2":
-                runs[r["test"]].setdefault(r["seed"], r)
+        runs = variant_runs(rows, variant)
         if not runs["O"] or not runs["I"]:
             found.append((variant, tests, None, None, None))
             continue
-        end = compare(dict((s, per_grain(r, "events")) for s, r in runs["O"].items()),
-                      dict((s, per_grain(r, "events")) for s, r in runs["I"].items()))
-        after = compare(dict((s, per_grain(r, "events") - per_grain(r, "events_first_load")) for s, r in runs["O"].items()),
-                        dict((s, per_grain(r, "events") - per_grain(r, "events_first_load")) for s, r in runs["I"].items()))
+        end = io_change(runs["O"], runs["I"])
+        after = io_change(runs["O"], runs["I"], lambda r: per_grain(r) - per_grain(r, "events_first_load"))
         found.append((variant, tests, runs, end, after))
     tested = [f for f in found if f[3] is not None]
     adjusted = dict(zip((f[0] for f in tested), holm([f[3]["p"] for f in tested])))
@@ -394,15 +408,15 @@ def io_mechanisms(folder):
             continue
         p_holm = adjusted[variant]
         lines.append("| %s | %s | %d | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
-            variant, tests, end["pairs"], cell([per_grain(r, "events") for r in runs["O"].values()], 4),
-            cell([per_grain(r, "events") for r in runs["I"].values()], 4), interval_cell(end, 4),
+            variant, tests, end["pairs"], cell([per_grain(r) for r in runs["O"].values()], 4),
+            cell([per_grain(r) for r in runs["I"].values()], 4), interval_cell(end, 4),
             "%.2g" % end["p"] if end["p"] == end["p"] else "", end["resolved"],
             ("yes" if p_holm < 0.05 else "no") if p_holm == p_holm else "", interval_cell(after, 4),
             cell([float(r["K0_end"]) for r in runs["O"].values()], 3),
             cell([float(r["p_end_MPa"]) for r in runs["O"].values()], 1),
             "%s; %s" % tuple(cell([stress_reached(r) for r in runs[test].values()], 1) for test in ("O", "I"))))
-    lines.append("| the paper (one run each) | | 1 | %.4f | %.4f | %+.4f | | | | | | | 100; 100 |" % (
-        PAPER[("O", "2")][2] / float(PAPER[("O", "2")][0]), PAPER[("I", "2")][2] / float(PAPER[("I", "2")][0]), paper))
+    lines.append("| the paper (one run each) | | 1 | %.4f | %.4f | %+.4f | | | | | | | 100; 100 |"
+                 % (paper_per_grain("O", "2"), paper_per_grain("I", "2"), paper_io("2")))
     return "\n".join(lines)
 
 

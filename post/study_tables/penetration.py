@@ -10,6 +10,7 @@ import math
 import os
 import statistics as py_statistics
 
+from post import penetration_stats
 from post.seeds import compare, holm, interval, statistics
 from post.study_tables.common import cell, conclusions, interval_cell, read_rows
 
@@ -44,13 +45,15 @@ class Study:
                 self.groups.setdefault(group, set()).add(r["case"])
 
     def cases(self, pattern):
-        """The rows of the cases pattern names (fnmatch), the first of a seed kept; it must name some."""
-        kept = {}
-        for r in self.rows:
-            if fnmatch.fnmatchcase(r["case"], pattern):
-                kept.setdefault(r["seed"], r)
-        if not kept:
+        """The rows of the cases pattern names (fnmatch), the first of a seed kept; it must name some,
+        all of one setting (penetration_stats.one_setting: a pattern never mixes two)."""
+        matched = [r for r in self.rows if fnmatch.fnmatchcase(r["case"], pattern)]
+        if not matched:
             raise SystemExit("penetration tables: no run of %s in %s" % (pattern, self.folder))
+        penetration_stats.one_setting(matched, pattern)
+        kept = {}
+        for r in matched:
+            kept.setdefault(r["seed"], r)
         return kept
 
     def values(self, pattern, column="q_c_MPa", scale=1.0):
