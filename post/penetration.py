@@ -43,10 +43,11 @@ import sys
 if not __package__:  # run as a file (python3 post/penetration.py): the folder above post/ holds the package
     sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 from post import requires  # noqa: E402
-from post.critical_state import least_squares  # noqa: E402
 from post.seeds import interval  # noqa: E402
 
 requires("penetration", "matplotlib")
+# after the check above: post/critical_state.py needs numpy, which a Python without matplotlib may lack
+from post.critical_state import least_squares  # noqa: E402
 
 import matplotlib
 
